@@ -1,0 +1,39 @@
+#include "registry.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "box2d/box2d_backend.h"
+#include "elastic/elastic_backend.h"
+#include "exact/exact_backend.h"
+
+namespace fooball {
+
+namespace {
+
+constexpr BackendInfo kBackends[] = {
+    {"elastic", "time-stepped elastic solver: move, detect overlaps, separate, exchange impulses",
+     &makeElasticBackend},
+    {"box2d", "Box2D 2.4.1, restitution 1, configured for frictionless balls", &makeBox2dBackend},
+    {"exact", "event-driven solver: exact collision times, processed in order", &makeExactBackend},
+};
+
+}  // namespace
+
+std::span<const BackendInfo> registeredBackends() {
+  return kBackends;
+}
+
+std::unique_ptr<Backend> createBackend(std::string_view name) {
+  for (const BackendInfo& info : kBackends) {
+    if (info.name == name) return info.create();
+  }
+  std::string known;
+  for (const BackendInfo& info : kBackends) {
+    known += known.empty() ? "" : ", ";
+    known += info.name;
+  }
+  throw std::invalid_argument("unknown backend '" + std::string(name) + "' (known: " + known + ")");
+}
+
+}  // namespace fooball

@@ -1,0 +1,12 @@
+# Writes OUTPUT: one `inline constexpr std::string_view kPreset_<name>` per JSON file in INPUTS.
+set(text "// Generated from engine/presets/*.json by embed_presets.cmake. Do not edit.\n")
+string(APPEND text "#pragma once\n#include <string_view>\nnamespace fooball::preset_data {\n")
+foreach(input IN LISTS INPUTS)
+  get_filename_component(name ${input} NAME_WE)
+  string(MAKE_C_IDENTIFIER ${name} identifier)
+  file(READ ${input} json)
+  string(APPEND text "inline constexpr std::string_view k_${identifier} = R\"fooball_json(${json})fooball_json\";\n")
+endforeach()
+string(APPEND text "}  // namespace fooball::preset_data\n")
+file(WRITE ${OUTPUT}.tmp "${text}")
+file(COPY_FILE ${OUTPUT}.tmp ${OUTPUT} ONLY_IF_DIFFERENT)

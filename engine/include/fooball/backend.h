@@ -1,0 +1,91 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fooball/options.h"
+#include "fooball/scene.h"
+#include "fooball/vec2.h"
+
+namespace fooball {
+
+/// Cumulative counts since the last load().
+struct BackendCounters {
+  std::uint64_t ballCollisions = 0;  ///< ball–ball impulses exchanged
+  std::uint64_t wallCollisions = 0;  ///< wall bounces
+  double wallImpulse = 0.0;          ///< N·s, Σ|Δp| delivered by the walls
+  double dragLoss = 0.0;             ///< J, mechanical energy air resistance has removed (≥ 0)
+};
+
+/// A backend-specific reading reported beside the counters, e.g. Box2D's translation-cap hits
+/// or the exact solver's event count.
+struct Diagnostic {
+  std::string name;
+  double value = 0.0;
+};
+
+/// One physics method simulating one scene. All backends obey the same contract (DESIGN.md,
+/// "Backend contract"), proven by tests/conformance_test.cpp:
+/// - momentum is conserved in ball–ball collisions, walls that are on reflect;
+/// - with all walls on, every ball stays inside the box, never NaN;
+/// - restitution is 1: any energy loss is a measured defect of the method;
+/// - deterministic: the same scene, settings and forces give the same trajectory;
+/// - no allocation per step in steady state.
+/// Balls keep their scene index for their whole life, whatever order a backend stores them in.
+class Backend {
+ public:
+  explicit Backend(std::vector<OptionSpec> optionSpecs) : options_(std::move(optionSpecs)) {}
+  virtual ~Backend() = default;
+  Backend(const Backend&) = delete;
+  Backend& operator=(const Backend&) = delete;
+
+  /// Replaces the whole state with `scene` (already validated) and zeroes the counters.
+  /// Switching backend is next.load(current.save()).
+  virtual void load(const Scene& scene) = 0;
+
+  /// The current state as a scene: same balls in the same order, same box and world.
+  virtual Scene save() const = 0;
+
+  /// Changes gravity, drag, collisions or walls from now on; positions and velocities stay.
+  virtual void setWorld(const WorldSettings& world) = 0;
+
+  /// Advances by `dt` seconds. `forces` (N, one per ball in scene order, or empty for none) act
+  /// as an impulse forces[i]·dt applied at the start of the step, so the work they do is exactly
+  /// J·(v + J/2m) for every backend; the driver books it in the energy budget.
+  virtual void step(double dt, std::span<const Vec2> forces) = 0;
+
+  /// Replaces ball `index` (already validated), e.g. an edit in the inspector.
+  virtual void setBall(std::size_t index, const BallDef& ball) = 0;
+
+  virtual std::size_t ballCount() const = 0;
+
+  /// Copies the balls' centres (m) and velocities (m/s) into caller-owned arrays of
+  /// ballCount() elements, in scene order.
+  virtual void readState(std::span<Vec2> positions, std::span<Vec2> velocities) const = 0;
+
+  virtual BackendCounters counters() const = 0;
+  virtual std::vector<Diagnostic> diagnostics() const { return {}; }
+
+  /// Named knobs with defaults; set* throws std::invalid_argument naming the problem.
+  const OptionSet& options() const { return options_; }
+  void setOption(std::string_view name, double value) {
+    options_.set(name, value);
+    optionsChanged();
+  }
+  void setOptionFromText(std::string_view assignment) {
+    options_.setFromText(assignment);
+    optionsChanged();
+  }
+
+ protected:
+  /// Called after any option changed; read options_ here rather than in the step loop.
+  virtual void optionsChanged() {}
+
+  OptionSet options_;
+};
+
+}  // namespace fooball

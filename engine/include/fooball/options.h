@@ -1,0 +1,42 @@
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fooball {
+
+/// One named backend knob (substeps, Box2D iterations, …).
+struct OptionSpec {
+  std::string name;         ///< e.g. "substeps"
+  std::string description;  ///< one line, with the unit
+  double defaultValue = 0.0;
+  double min = 0.0;
+  double max = 0.0;
+  bool integer = false;  ///< whole numbers only (counts); booleans are integers in [0, 1]
+};
+
+/// The values of a backend's options. Checks names and ranges, so backends can trust values.
+class OptionSet {
+ public:
+  explicit OptionSet(std::vector<OptionSpec> specs);
+
+  std::span<const OptionSpec> specs() const { return specs_; }
+  double value(std::string_view name) const;
+
+  /// Throws std::invalid_argument naming the option and the reason (unknown name, out of range,
+  /// not a whole number, not finite).
+  void set(std::string_view name, double value);
+
+  /// Parses "KEY=VALUE" ("true"/"false"/"on"/"off" allowed for 0/1 options) and sets it.
+  void setFromText(std::string_view assignment);
+
+ private:
+  std::size_t indexOf(std::string_view name) const;
+
+  std::vector<OptionSpec> specs_;
+  std::vector<double> values_;
+};
+
+}  // namespace fooball

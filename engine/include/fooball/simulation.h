@@ -1,0 +1,98 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "fooball/backend.h"
+#include "fooball/interactions.h"
+#include "fooball/metrics.h"
+#include "fooball/scene.h"
+
+namespace fooball {
+
+/// Drives one backend at a fixed time step: pause and single step, forces from the
+/// interactions, backend switching with nothing lost, counters that survive a switch, and the
+/// energy budget. The GUI and fooball-cli both run scenes through it.
+class Simulation {
+ public:
+  /// `scene` must be valid (validateScene).
+  Simulation(const Scene& scene, std::unique_ptr<Backend> backend);
+
+  /// Restarts from `scene`: time, counters and the energy budget start again.
+  void load(const Scene& scene);
+
+  /// Continues on `next` from the current state: next.load(current.save()). Time, counters and
+  /// the budget carry on.
+  void setBackend(std::unique_ptr<Backend> next);
+  Backend& backend() { return *backend_; }
+  const Backend& backend() const { return *backend_; }
+
+  /// The current state as a scene (what --save writes).
+  Scene scene() const;
+
+  /// Gravity changes the potential energy at once; that jump is booked as external work.
+  void setWorld(const WorldSettings& world);
+  const WorldSettings& world() const { return world_; }
+  const Box& box() const { return box_; }
+
+  /// Replaces ball `index` after validating it; the energy change is booked as external work.
+  void setBall(std::size_t index, const BallDef& ball);
+
+  /// s, the fixed physics step (> 0).
+  double dt() const { return dt_; }
+  void setDt(double dt);
+
+  /// One physics step of dt(), paused or not.
+  void step();
+  /// Runs whole steps for `seconds` of simulated time (rounded to whole steps).
+  void run(double seconds);
+
+  bool paused = false;
+  /// Real-time driving: adds elapsed·timeScale to an accumulator and runs the whole steps it
+  /// holds (none while paused), at most `maxSteps` (the rest is dropped, so a slow machine
+  /// slows the simulation down instead of spiralling). Returns the steps run.
+  int advance(double elapsedSeconds, double timeScale, int maxSteps);
+
+  double time() const { return time_; }
+  std::uint64_t steps() const { return steps_; }
+  std::size_t ballCount() const { return masses_.size(); }
+
+  Interactions interactions;
+
+  std::span<const Vec2> positions() const { return positions_; }
+  std::span<const Vec2> velocities() const { return velocities_; }
+  std::span<const double> radii() const { return radii_; }
+  std::span<const double> masses() const { return masses_; }
+  BallsView balls() const { return {positions_, velocities_, radii_, masses_}; }
+
+  /// Counters summed over every backend this run has used.
+  BackendCounters counters() const;
+
+  /// All metrics of DESIGN.md, including the O(N) overlap search.
+  Metrics metrics() const;
+
+ private:
+  void adoptScene(const Scene& scene);
+  void refreshState();
+
+  std::unique_ptr<Backend> backend_;
+  Box box_;
+  WorldSettings world_;
+  std::vector<Vec2> positions_;
+  std::vector<Vec2> velocities_;
+  std::vector<double> radii_;
+  std::vector<double> masses_;
+  std::vector<std::uint32_t> colors_;
+  std::vector<Vec2> forces_;
+  double dt_ = 1.0 / 240.0;
+  double time_ = 0.0;
+  double accumulator_ = 0.0;
+  std::uint64_t steps_ = 0;
+  BackendCounters earlierBackends_;  ///< counters of backends switched away from
+  double initialEnergy_ = 0.0;
+  double externalWork_ = 0.0;  ///< J, by tools, edits and gravity changes
+};
+
+}  // namespace fooball
