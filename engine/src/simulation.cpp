@@ -1,0 +1,176 @@
+#include "fooball/simulation.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "fooball/scene_error.h"
+#include "fooball/scene_file.h"
+
+namespace fooball {
+
+namespace {
+
+BackendCounters operator+(const BackendCounters& a, const BackendCounters& b) {
+  return {a.ballCollisions + b.ballCollisions, a.wallCollisions + b.wallCollisions,
+          a.wallImpulse + b.wallImpulse, a.dragLoss + b.dragLoss};
+}
+
+}  // namespace
+
+Simulation::Simulation(const Scene& scene, std::unique_ptr<Backend> backend)
+    : backend_(std::move(backend)) {
+  load(scene);
+}
+
+void Simulation::load(const Scene& scene) {
+  backend_->load(scene);
+  adoptScene(scene);
+  timeBase_ = 0.0;
+  stepsSinceDtChange_ = 0;
+  accumulator_ = 0.0;
+  steps_ = 0;
+  earlierBackends_ = {};
+  externalWork_ = 0.0;
+  interactions.forgetBalls();
+  refreshState();
+  initialEnergy_ = totalEnergy();
+}
+
+void Simulation::adoptScene(const Scene& scene) {
+  name_ = scene.name;
+  box_ = scene.box;
+  world_ = scene.world;
+  const std::size_t count = scene.balls.size();
+  radii_.resize(count);
+  masses_.resize(count);
+  colors_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    radii_[i] = scene.balls[i].radius;
+    masses_[i] = scene.balls[i].mass;
+    colors_[i] = scene.balls[i].color;
+  }
+  positions_.resize(count);
+  velocities_.resize(count);
+  forces_.resize(count);
+}
+
+void Simulation::refreshState() {
+  backend_->readState(positions_, velocities_);
+}
+
+double Simulation::totalEnergy() const {
+  return sumState(positions_, velocities_, masses_, world_.gravity).totalEnergy();
+}
+
+void Simulation::setBackend(std::unique_ptr<Backend> next) {
+  next->load(backend_->save());
+  earlierBackends_ = earlierBackends_ + backend_->counters();
+  backend_ = std::move(next);
+  refreshState();
+}
+
+Scene Simulation::scene() const {
+  Scene scene{name_, box_, world_, {}};
+  scene.balls.resize(ballCount());
+  for (std::size_t i = 0; i < ballCount(); ++i) {
+    scene.balls[i] = {positions_[i], velocities_[i], radii_[i], masses_[i], colors_[i]};
+  }
+  return scene;
+}
+
+void Simulation::setWorld(const WorldSettings& world) {
+  const double before = totalEnergy();
+  backend_->setWorld(world);
+  world_ = world;
+  externalWork_ += totalEnergy() - before;
+}
+
+void Simulation::setBall(std::size_t index, const BallDef& ball) {
+  const std::string where = "balls[" + std::to_string(index) + "]";
+  if (index >= ballCount()) {
+    throw SceneError(where + ": no such ball (the scene has " + std::to_string(ballCount()) + ")");
+  }
+  validateBall(ball, box_, where);
+  for (std::size_t other = 0; other < ballCount(); ++other) {
+    if (other == index) continue;
+    const double reach = ball.radius + radii_[other];
+    const double depth = reach - length(ball.position - positions_[other]);
+    if (depth > kContactSlop * std::min(ball.radius, radii_[other])) {
+      throw SceneError(where + ": would overlap balls[" + std::to_string(other) + "]");
+    }
+  }
+  const double before = totalEnergy();
+  backend_->setBall(index, ball);
+  radii_[index] = ball.radius;
+  masses_[index] = ball.mass;
+  colors_[index] = ball.color;
+  refreshState();
+  externalWork_ += totalEnergy() - before;
+}
+
+void Simulation::setDt(double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    throw std::invalid_argument("time step must be a positive number of seconds");
+  }
+  timeBase_ = time();
+  stepsSinceDtChange_ = 0;
+  dt_ = dt;
+}
+
+void Simulation::step() {
+  if (interactions.active()) {
+    interactions.forces(balls(), dt_, forces_);
+    // The contract applies J = F·dt as a kick at the start of the step, so the work is exact:
+    // ΔKE = J·v + |J|²/2m.
+    for (std::size_t i = 0; i < ballCount(); ++i) {
+      const Vec2 impulse = dt_ * forces_[i];
+      externalWork_ += dot(impulse, velocities_[i] + impulse / (2.0 * masses_[i]));
+    }
+    backend_->step(dt_, forces_);
+  } else {
+    backend_->step(dt_, {});
+  }
+  refreshState();
+  ++stepsSinceDtChange_;
+  ++steps_;
+}
+
+void Simulation::run(double seconds) {
+  const auto count = static_cast<std::uint64_t>(std::llround(seconds / dt_));
+  for (std::uint64_t i = 0; i < count; ++i)
+    step();
+}
+
+int Simulation::advance(double elapsedSeconds, double timeScale, int maxSteps) {
+  if (paused) return 0;
+  accumulator_ += elapsedSeconds * timeScale;
+  int count = static_cast<int>(std::min(std::floor(accumulator_ / dt_), double(maxSteps)));
+  accumulator_ = count == maxSteps ? 0.0 : accumulator_ - count * dt_;
+  for (int i = 0; i < count; ++i)
+    step();
+  return count;
+}
+
+BackendCounters Simulation::counters() const {
+  return earlierBackends_ + backend_->counters();
+}
+
+Metrics Simulation::metrics() const {
+  Metrics metrics;
+  metrics.time = time();
+  metrics.sums = sumState(positions_, velocities_, masses_, world_.gravity);
+  const BackendCounters counts = counters();
+  metrics.ballCollisions = counts.ballCollisions;
+  metrics.wallCollisions = counts.wallCollisions;
+  metrics.wallImpulse = counts.wallImpulse;
+  metrics.maxOverlap = maxOverlap(positions_, radii_, box_, world_.walls);
+  metrics.escaped = countEscaped(positions_, box_);
+  metrics.externalWork = externalWork_;
+  metrics.dragLoss = counts.dragLoss;
+  metrics.energyResidual =
+      metrics.sums.totalEnergy() - initialEnergy_ - externalWork_ + counts.dragLoss;
+  return metrics;
+}
+
+}  // namespace fooball

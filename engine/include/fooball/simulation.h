@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "fooball/backend.h"
@@ -40,7 +41,7 @@ class Simulation {
   /// Replaces ball `index` after validating it; the energy change is booked as external work.
   void setBall(std::size_t index, const BallDef& ball);
 
-  /// s, the fixed physics step (> 0).
+  /// s, the fixed physics step (> 0); one step per frame at 60 Hz by default.
   double dt() const { return dt_; }
   void setDt(double dt);
 
@@ -55,7 +56,7 @@ class Simulation {
   /// slows the simulation down instead of spiralling). Returns the steps run.
   int advance(double elapsedSeconds, double timeScale, int maxSteps);
 
-  double time() const { return time_; }
+  double time() const { return timeBase_ + static_cast<double>(stepsSinceDtChange_) * dt_; }
   std::uint64_t steps() const { return steps_; }
   std::size_t ballCount() const { return masses_.size(); }
 
@@ -76,6 +77,7 @@ class Simulation {
  private:
   void adoptScene(const Scene& scene);
   void refreshState();
+  double totalEnergy() const;
 
   std::unique_ptr<Backend> backend_;
   Box box_;
@@ -86,8 +88,12 @@ class Simulation {
   std::vector<double> masses_;
   std::vector<std::uint32_t> colors_;
   std::vector<Vec2> forces_;
-  double dt_ = 1.0 / 240.0;
-  double time_ = 0.0;
+  std::string name_;
+  double dt_ = 1.0 / 60.0;
+  /// Simulated time is timeBase_ + stepsSinceDtChange_·dt_: exact multiples of dt, no drift from
+  /// summing dt step by step.
+  double timeBase_ = 0.0;
+  std::uint64_t stepsSinceDtChange_ = 0;
   double accumulator_ = 0.0;
   std::uint64_t steps_ = 0;
   BackendCounters earlierBackends_;  ///< counters of backends switched away from
