@@ -1,0 +1,352 @@
+// The contract every registered backend meets (DESIGN.md, "Backend contract"). The suite is
+// instantiated over registeredBackends(), so a new backend is tested by its registry line alone.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <new>
+#include <string>
+
+#include "fooball/metrics.h"
+#include "fooball/simulation.h"
+#include "registry.h"
+#include "test_scenes.h"
+
+// Counts every operator new in this test binary, to prove steps do not allocate.
+namespace {
+std::atomic<long> allocationCount{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  ++allocationCount;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace fooball {
+namespace {
+
+using testing::ball;
+using testing::emptyBox;
+using testing::gas;
+
+/// How far a backend may stray from exact answers, and why.
+struct Tolerances {
+  double momentum = 1e-12;  ///< relative to Σ m|v|
+  double energy = 1e-9;     ///< relative kinetic-energy change in a no-gravity gas over 5 s
+  double velocity = 1e-9;   ///< relative, for closed-form two-ball and kick answers
+  double position = 1e-9;   ///< m
+};
+
+/// Double-precision backends meet the defaults: the elastic solver's impulse and wall mirror
+/// conserve KE to rounding, and the exact solver is exact by construction.
+Tolerances tolerancesFor(std::string_view backend) {
+  if (backend == "box2d") {
+    // Box2D stores float (ε = 1.2e-7): sums of 300 momenta lose ~1e-6 relative. Its sequential
+    // impulse solver with restitution 1 resolves each contact to within the velocity
+    // iterations, so a dense gas loses or gains energy at the percent level: 3% over 5 s.
+    // Positions are float at ~10 m: ~1e-6 m per step; Box2D also pushes contacts apart
+    // by up to its linear slop (5 mm).
+    return {1e-5, 0.03, 1e-4, 1e-4};
+  }
+  return {};
+}
+
+class Conformance : public ::testing::TestWithParam<BackendInfo> {
+ protected:
+  std::unique_ptr<Backend> make() const { return GetParam().create(); }
+  Tolerances tolerances() const { return tolerancesFor(GetParam().name); }
+};
+
+struct State {
+  std::vector<Vec2> positions;
+  std::vector<Vec2> velocities;
+};
+
+State read(const Backend& backend) {
+  State state{std::vector<Vec2>(backend.ballCount()), std::vector<Vec2>(backend.ballCount())};
+  backend.readState(state.positions, state.velocities);
+  return state;
+}
+
+std::vector<double> massesOf(const Scene& scene) {
+  std::vector<double> masses;
+  for (const BallDef& b : scene.balls)
+    masses.push_back(b.mass);
+  return masses;
+}
+
+double momentumScale(const Scene& scene) {
+  double scale = 0.0;
+  for (const BallDef& b : scene.balls)
+    scale += b.mass * length(b.velocity);
+  return scale;
+}
+
+void run(Backend& backend, double seconds, double dt = 1.0 / 60.0) {
+  const auto steps = static_cast<int>(std::lround(seconds / dt));
+  for (int i = 0; i < steps; ++i)
+    backend.step(dt, {});
+}
+
+TEST_P(Conformance, MomentumIsConservedWithWallsOff) {
+  Scene scene = gas(300);
+  scene.world.walls = {false, false, false, false};
+  auto backend = make();
+  backend->load(scene);
+  const Vec2 before =
+      sumState(read(*backend).positions, read(*backend).velocities, massesOf(scene), {}).momentum;
+  run(*backend, 3.0);
+  const State after = read(*backend);
+  const Vec2 momentum = sumState(after.positions, after.velocities, massesOf(scene), {}).momentum;
+  EXPECT_GT(backend->counters().ballCollisions, 50u) << "the test needs collisions to mean much";
+  EXPECT_LE(length(momentum - before), tolerances().momentum * momentumScale(scene));
+}
+
+TEST_P(Conformance, KineticEnergyIsConservedInAGasWithoutGravity) {
+  const Scene scene = gas(300);
+  auto backend = make();
+  backend->load(scene);
+  const double before =
+      sumState(read(*backend).positions, read(*backend).velocities, massesOf(scene), {})
+          .kineticEnergy;
+  run(*backend, 5.0);
+  const State after = read(*backend);
+  const double energy =
+      sumState(after.positions, after.velocities, massesOf(scene), {}).kineticEnergy;
+  EXPECT_GT(backend->counters().ballCollisions, 100u);
+  EXPECT_GT(backend->counters().wallCollisions, 100u);
+  EXPECT_NEAR(energy / before, 1.0, tolerances().energy);
+}
+
+TEST_P(Conformance, NobodyEscapesAClosedBoxUnderGravityAtHighSpeed) {
+  Scene scene = gas(400, 11);
+  scene.world.gravity = {3.0, -30.0};
+  for (std::size_t i = 0; i < scene.balls.size(); i += 10)
+    scene.balls[i].velocity *= 15.0;
+  auto backend = make();
+  backend->load(scene);
+  for (int frame = 0; frame < 240; ++frame) {
+    backend->step(1.0 / 60.0, {});
+    const State state = read(*backend);
+    for (std::size_t i = 0; i < state.positions.size(); ++i) {
+      const Vec2 p = state.positions[i];
+      ASSERT_TRUE(isFinite(p) && isFinite(state.velocities[i])) << "ball " << i;
+      ASSERT_TRUE(p.x > 0.0 && p.x < scene.box.width && p.y > 0.0 && p.y < scene.box.height)
+          << "ball " << i << " at (" << p.x << ", " << p.y << ") in frame " << frame;
+    }
+  }
+}
+
+TEST_P(Conformance, SameSceneGivesTheSameTrajectory) {
+  Scene scene = gas(200, 3);
+  scene.world.gravity = {0.0, -9.81};
+  scene.world.airResistance = 0.1;
+  auto first = make();
+  auto second = make();
+  first->load(scene);
+  second->load(scene);
+  run(*first, 2.0);
+  run(*second, 2.0);
+  const State a = read(*first);
+  const State b = read(*second);
+  for (std::size_t i = 0; i < a.positions.size(); ++i) {
+    ASSERT_EQ(a.positions[i], b.positions[i]) << "ball " << i;
+    ASSERT_EQ(a.velocities[i], b.velocities[i]) << "ball " << i;
+  }
+}
+
+TEST_P(Conformance, SaveThenLoadGivesBackTheSameState) {
+  Scene scene = gas(150, 5);
+  scene.world.gravity = {0.0, -4.0};
+  scene.balls[3].color = 0x123456;
+  auto original = make();
+  original->load(scene);
+  run(*original, 1.0);
+  const Scene saved = original->save();
+  ASSERT_EQ(saved.balls.size(), scene.balls.size());
+  EXPECT_EQ(saved.box, scene.box);
+  EXPECT_EQ(saved.world, scene.world);
+  EXPECT_EQ(saved.name, scene.name);
+  EXPECT_EQ(saved.balls[3].color, 0x123456u);
+
+  auto copy = make();
+  copy->load(saved);
+  const Scene again = copy->save();
+  for (std::size_t i = 0; i < saved.balls.size(); ++i) {
+    ASSERT_EQ(again.balls[i].position, saved.balls[i].position) << "ball " << i;
+    ASSERT_EQ(again.balls[i].velocity, saved.balls[i].velocity) << "ball " << i;
+    ASSERT_EQ(again.balls[i].radius, saved.balls[i].radius) << "ball " << i;
+    ASSERT_EQ(again.balls[i].mass, saved.balls[i].mass) << "ball " << i;
+  }
+  const State state = read(*original);
+  for (std::size_t i = 0; i < saved.balls.size(); ++i) {
+    ASSERT_EQ(state.positions[i], saved.balls[i].position) << "readState and save agree";
+  }
+}
+
+TEST_P(Conformance, SwitchingBackendMidRunKeepsTheState) {
+  Scene scene = gas(200, 9);
+  scene.world.gravity = {0.0, -9.81};
+  for (const BackendInfo& from : registeredBackends()) {
+    Simulation simulation(scene, from.create());
+    simulation.run(0.5);
+    const std::vector<Vec2> positions(simulation.positions().begin(), simulation.positions().end());
+    const std::vector<Vec2> velocities(simulation.velocities().begin(),
+                                       simulation.velocities().end());
+    const auto collisions = simulation.counters().ballCollisions;
+    simulation.setBackend(make());
+    ASSERT_EQ(simulation.ballCount(), positions.size());
+    // The target stores what it can: bit-exact for double backends, nearest float for Box2D.
+    const double tolerance = std::max(tolerancesFor(from.name).position, tolerances().position);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      ASSERT_NEAR(simulation.positions()[i].x, positions[i].x, tolerance) << from.name << " " << i;
+      ASSERT_NEAR(simulation.positions()[i].y, positions[i].y, tolerance) << from.name << " " << i;
+      ASSERT_NEAR(simulation.velocities()[i].x, velocities[i].x, tolerance * 10.0) << i;
+      ASSERT_NEAR(simulation.velocities()[i].y, velocities[i].y, tolerance * 10.0) << i;
+    }
+    EXPECT_EQ(simulation.counters().ballCollisions, collisions) << "counters carry over";
+    simulation.run(0.5);
+    EXPECT_EQ(simulation.metrics().escaped, 0u);
+  }
+}
+
+TEST_P(Conformance, HeadOnEqualMassesSwapVelocities) {
+  Scene scene = emptyBox();
+  scene.balls = {ball({5.0, 4.5}, {2.0, 0.0}), ball({11.0, 4.5}, {-1.0, 0.0})};
+  auto backend = make();
+  backend->load(scene);
+  run(*backend, 2.0);  // a 5 m gap closing at 3 m/s: contact at t = 5/3 s, no wall before 2 s
+  const State state = read(*backend);
+  EXPECT_NEAR(state.velocities[0].x, -1.0, 1.0 * tolerances().velocity * 100);
+  EXPECT_NEAR(state.velocities[1].x, 2.0, 2.0 * tolerances().velocity * 100);
+  EXPECT_EQ(backend->counters().ballCollisions, 1u);
+}
+
+TEST_P(Conformance, ForcesActAsAKickAtTheStartOfTheStep) {
+  Scene scene = emptyBox();
+  scene.balls = {ball({8.0, 4.5}, {1.0, 0.0}, 0.5, 2.0)};
+  auto backend = make();
+  backend->load(scene);
+  const double dt = 0.05;
+  const Vec2 force{4.0, -2.0};  // N on a 2 kg ball: Δv = F·dt/m = (0.1, −0.05) m/s
+  backend->step(dt, std::vector<Vec2>{force});
+  const State state = read(*backend);
+  const Vec2 expectedVelocity{1.1, -0.05};
+  EXPECT_NEAR(state.velocities[0].x, expectedVelocity.x, tolerances().velocity);
+  EXPECT_NEAR(state.velocities[0].y, expectedVelocity.y, tolerances().velocity);
+  EXPECT_NEAR(state.positions[0].x, 8.0 + expectedVelocity.x * dt, tolerances().position);
+  EXPECT_NEAR(state.positions[0].y, 4.5 + expectedVelocity.y * dt, tolerances().position);
+}
+
+TEST_P(Conformance, AWallBounceIsCountedOnceWithItsImpulse) {
+  Scene scene = emptyBox();
+  scene.balls = {ball({14.0, 4.5}, {3.0, 0.0}, 0.5, 2.0)};
+  auto backend = make();
+  backend->load(scene);
+  run(*backend, 1.0);  // reaches the right wall (x = 15.5) after 0.5 s
+  const State state = read(*backend);
+  EXPECT_EQ(backend->counters().wallCollisions, 1u);
+  EXPECT_NEAR(backend->counters().wallImpulse, 2.0 * 2.0 * 3.0, 12.0 * tolerances().velocity);
+  EXPECT_NEAR(state.velocities[0].x, -3.0, 3.0 * tolerances().velocity);
+}
+
+TEST_P(Conformance, WallsThatAreOffLetBallsOut) {
+  Scene scene = emptyBox();
+  scene.world.walls.right = false;
+  scene.balls = {ball({14.0, 4.5}, {3.0, 0.0})};
+  auto backend = make();
+  backend->load(scene);
+  run(*backend, 2.0);
+  EXPECT_NEAR(read(*backend).positions[0].x, 20.0, tolerances().position * 10);
+  EXPECT_EQ(backend->counters().wallCollisions, 0u);
+}
+
+TEST_P(Conformance, BallsPassThroughEachOtherWhenCollisionsAreOff) {
+  Scene scene = emptyBox();
+  scene.world.ballCollisions = false;
+  scene.balls = {ball({5.0, 4.5}, {2.0, 0.0}), ball({11.0, 4.5}, {-2.0, 0.0})};
+  auto backend = make();
+  backend->load(scene);
+  run(*backend, 2.0);
+  const State state = read(*backend);
+  EXPECT_NEAR(state.positions[0].x, 9.0, tolerances().position * 10);
+  EXPECT_NEAR(state.positions[1].x, 7.0, tolerances().position * 10);
+  EXPECT_EQ(backend->counters().ballCollisions, 0u);
+}
+
+TEST_P(Conformance, SetWorldChangesGravityLive) {
+  Scene scene = emptyBox();
+  scene.balls = {ball({8.0, 4.5}, {0.0, 0.0})};
+  auto backend = make();
+  backend->load(scene);
+  run(*backend, 0.5);
+  EXPECT_EQ(read(*backend).velocities[0].y, 0.0);
+  scene.world.gravity = {0.0, -2.0};
+  backend->setWorld(scene.world);
+  run(*backend, 0.5);
+  EXPECT_NEAR(read(*backend).velocities[0].y, -1.0, tolerances().velocity * 10);
+}
+
+TEST_P(Conformance, SetBallEditsOneBallAndKeepsTheOthers) {
+  Scene scene = gas(50, 2);
+  auto backend = make();
+  backend->load(scene);
+  run(*backend, 0.25);
+  const State before = read(*backend);
+  BallDef edited = ball({8.0, 4.5}, {0.0, 0.0}, 0.05, 3.0);
+  // Put it where nothing is: move it onto the spot of ball 7, which we then check moved.
+  edited.position = before.positions[7];
+  backend->setBall(7, edited);
+  const State after = read(*backend);
+  EXPECT_EQ(after.velocities[7], Vec2{});
+  EXPECT_EQ(after.positions[8], before.positions[8]);
+  EXPECT_NEAR(backend->save().balls[7].mass, 3.0, 3.0 * tolerances().velocity);
+  EXPECT_NEAR(backend->save().balls[7].radius, 0.05, 0.05 * tolerances().velocity);
+}
+
+TEST_P(Conformance, StepsDoNotAllocateInSteadyState) {
+  Scene scene = gas(500, 4);
+  scene.world.gravity = {0.0, -9.81};
+  auto backend = make();
+  backend->load(scene);
+  std::vector<Vec2> forces(scene.balls.size(), Vec2{0.1, 0.0});
+  run(*backend, 2.0);  // warm up: buffers grow to their working size
+  backend->step(1.0 / 60.0, forces);
+  const long before = allocationCount.load();
+  for (int i = 0; i < 60; ++i) {
+    backend->step(1.0 / 60.0, i % 2 ? std::span<const Vec2>(forces) : std::span<const Vec2>());
+  }
+  EXPECT_EQ(allocationCount.load() - before, 0);
+}
+
+TEST_P(Conformance, OptionsHaveValidDefaultsAndRejectNonsense) {
+  auto backend = make();
+  for (const OptionSpec& spec : backend->options().specs()) {
+    EXPECT_GE(spec.defaultValue, spec.min) << spec.name;
+    EXPECT_LE(spec.defaultValue, spec.max) << spec.name;
+    EXPECT_EQ(backend->options().value(spec.name), spec.defaultValue) << spec.name;
+    EXPECT_THROW(backend->setOption(spec.name, spec.max + 1.0), std::invalid_argument);
+    EXPECT_THROW(backend->setOption(spec.name, std::nan("")), std::invalid_argument);
+  }
+  EXPECT_THROW(backend->setOption("no_such_option", 1.0), std::invalid_argument);
+}
+
+std::string backendName(const ::testing::TestParamInfo<BackendInfo>& info) {
+  return std::string(info.param.name);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryBackend, Conformance, ::testing::ValuesIn(registeredBackends()),
+                         backendName);
+
+}  // namespace
+}  // namespace fooball

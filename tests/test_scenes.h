@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fooball/random_balls.h"
+#include "fooball/scene.h"
+
+namespace fooball::testing {
+
+/// A ball of density 1 kg/m² (mass π r²) unless a mass is given.
+inline BallDef ball(Vec2 position, Vec2 velocity, double radius = 0.5, double mass = 0.0) {
+  return {position, velocity, radius, mass > 0.0 ? mass : diskMass(radius), 0xffffff};
+}
+
+/// A 16 × 9 m box with all walls on, no gravity, no drag.
+inline Scene emptyBox(double width = 16.0, double height = 9.0) {
+  Scene scene;
+  scene.name = "test";
+  scene.box = {width, height};
+  return scene;
+}
+
+/// `count` random balls (radius 0.1–0.2 m, speed 0.5–3 m/s) in a 16 × 9 m box.
+inline Scene gas(std::size_t count, std::uint64_t seed = 7, double width = 16.0,
+                 double height = 9.0) {
+  Scene scene = emptyBox(width, height);
+  RandomBalls spec;
+  spec.count = count;
+  spec.minRadius = 0.1;
+  spec.maxRadius = 0.2;
+  spec.seed = seed;
+  addRandomBalls(scene, spec);
+  return scene;
+}
+
+}  // namespace fooball::testing
