@@ -1,4 +1,4 @@
-# Writes OUTPUT: one `inline constexpr std::string_view kPreset_<name>` per JSON file in INPUTS.
+# Writes OUTPUT: one `inline constexpr std::string_view k_<name>` per JSON file in INPUTS.
 set(text "// Generated from engine/presets/*.json by embed_presets.cmake. Do not edit.\n")
 string(APPEND text "#pragma once\n#include <string_view>\nnamespace fooball::preset_data {\n")
 foreach(input IN LISTS INPUTS)

@@ -1,0 +1,128 @@
+// The value rules of the scene format, applied to in-memory scenes: the reader checks JSON
+// types, these check what the numbers mean, so a scene built in code or saved by a backend
+// meets the same rules as one read from a file. Where DESIGN.md is silent:
+// - radius is at most kMaxBoxSide (a bigger ball fits no box, and its area would overflow);
+// - the overlap rule holds only while ball_collisions is on: with it off, balls pass through
+//   each other, and a state saved mid-pass must load back.
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "fooball/scene_file.h"
+#include "message_text.h"
+#include "overlap_search.h"
+#include "scene_checks.h"
+
+namespace fooball {
+namespace {
+
+std::string maxBoxSideText() {
+  return std::to_string(static_cast<long long>(kMaxBoxSide));
+}
+
+std::string slopPercentText() {
+  return roundedNumberText(100.0 * kContactSlop);
+}
+
+void checkFinite(double value, const Place& place) {
+  if (!std::isfinite(value)) failAt(place, "must be finite (got " + exactNumberText(value) + ")");
+}
+
+void checkFinite(Vec2 value, const Place& place) {
+  checkFinite(value.x, place.index(0));
+  checkFinite(value.y, place.index(1));
+}
+
+void checkPositive(double value, const Place& place) {
+  checkFinite(value, place);
+  if (!(value > 0.0)) failAt(place, "must be > 0 (got " + exactNumberText(value) + ")");
+}
+
+void checkLength(double value, const Place& place) {
+  checkPositive(value, place);
+  if (value > kMaxBoxSide) {
+    failAt(place,
+           "must be at most " + maxBoxSideText() + " m (got " + exactNumberText(value) + ")");
+  }
+}
+
+/// How far (m) the ball reaches past a wall, against the contact slop it may.
+void checkWallDepth(double depth, double radius, std::string_view wall, const Place& position) {
+  if (depth > kContactSlop * radius) {
+    failAt(position, "the ball crosses the " + std::string(wall) + " wall by " +
+                         roundedNumberText(depth) + " m, more than " + slopPercentText() +
+                         "% of its radius");
+  }
+}
+
+void checkBox(const Box& box, const Place& place) {
+  checkLength(box.width, place.key("width"));
+  checkLength(box.height, place.key("height"));
+}
+
+void checkWorld(const WorldSettings& world) {
+  const Place top;
+  checkFinite(world.gravity, top.key("gravity"));
+  const Place airResistance = top.key("air_resistance");
+  checkFinite(world.airResistance, airResistance);
+  if (world.airResistance < 0.0) {
+    failAt(airResistance, "must be >= 0 (got " + exactNumberText(world.airResistance) + ")");
+  }
+}
+
+}  // namespace
+
+void checkBall(const BallDef& ball, const Box& box, const Walls& walls, const Place& place) {
+  const Place position = place.key("position");
+  checkFinite(ball.position, position);
+  checkFinite(ball.velocity, place.key("velocity"));
+  checkLength(ball.radius, place.key("radius"));
+  checkPositive(ball.mass, place.key("mass"));
+  if (ball.color > 0xffffffu) {
+    std::array<char, 16> hex{};
+    std::snprintf(hex.data(), hex.size(), "0x%x", ball.color);
+    failAt(place.key("color"), "must be 0xRRGGBB (got " + std::string(hex.data()) + ")");
+  }
+  const double r = ball.radius;
+  const Vec2 p = ball.position;
+  if (walls.left) checkWallDepth(r - p.x, r, "left", position);
+  if (walls.right) checkWallDepth(p.x + r - box.width, r, "right", position);
+  if (walls.bottom) checkWallDepth(r - p.y, r, "bottom", position);
+  if (walls.top) checkWallDepth(p.y + r - box.height, r, "top", position);
+}
+
+void checkScene(const Scene& scene) {
+  const Place top;
+  checkBox(scene.box, top.key("box"));
+  checkWorld(scene.world);
+  const Place balls = top.key("balls");
+  if (scene.balls.size() > kMaxBalls) {
+    failAt(balls, "has " + std::to_string(scene.balls.size()) + " balls, more than the limit of " +
+                      std::to_string(kMaxBalls));
+  }
+  for (std::size_t i = 0; i < scene.balls.size(); ++i)
+    checkBall(scene.balls[i], scene.box, scene.world.walls, balls.index(i));
+  if (!scene.world.ballCollisions) return;
+  if (const auto overlap = findDeepOverlap(scene.balls, kContactSlop)) {
+    failAt(balls.index(overlap->second),
+           "overlaps balls[" + std::to_string(overlap->first) + "] by " +
+               roundedNumberText(100.0 * overlap->depthFraction) +
+               "% of the smaller radius (the limit is " + slopPercentText() + "%)");
+  }
+}
+
+void validateScene(const Scene& scene, std::string_view source) {
+  try {
+    checkScene(scene);
+  } catch (const SceneError& error) {
+    throw SceneError(withSource(source, error.what()));
+  }
+}
+
+void validateBall(const BallDef& ball, const Box& box, const Walls& walls, std::string_view where) {
+  checkBall(ball, box, walls, Place(where));
+}
+
+}  // namespace fooball

@@ -91,7 +91,7 @@ void Simulation::setBall(std::size_t index, const BallDef& ball) {
   if (index >= ballCount()) {
     throw SceneError(where + ": no such ball (the scene has " + std::to_string(ballCount()) + ")");
   }
-  validateBall(ball, box_, where);
+  validateBall(ball, box_, world_.walls, where);
   for (std::size_t other = 0; other < ballCount(); ++other) {
     if (other == index) continue;
     const double reach = ball.radius + radii_[other];
@@ -105,6 +105,18 @@ void Simulation::setBall(std::size_t index, const BallDef& ball) {
   radii_[index] = ball.radius;
   masses_[index] = ball.mass;
   colors_[index] = ball.color;
+  refreshState();
+  externalWork_ += totalEnergy() - before;
+}
+
+void Simulation::replaceBalls(std::vector<BallDef> balls) {
+  const double before = totalEnergy();
+  Scene next = scene();
+  next.balls = std::move(balls);
+  earlierBackends_ = earlierBackends_ + backend_->counters();
+  backend_->load(next);
+  adoptScene(next);
+  interactions.forgetBalls();
   refreshState();
   externalWork_ += totalEnergy() - before;
 }

@@ -31,6 +31,6 @@ void saveSceneFile(const Scene& scene, const std::filesystem::path& path);
 void validateScene(const Scene& scene, std::string_view source);
 
 /// The per-ball rules of validateScene (not the overlap rule); `where` is e.g. "balls[3]".
-void validateBall(const BallDef& ball, const Box& box, std::string_view where);
+void validateBall(const BallDef& ball, const Box& box, const Walls& walls, std::string_view where);
 
 }  // namespace fooball

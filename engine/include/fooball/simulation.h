@@ -41,6 +41,11 @@ class Simulation {
   /// Replaces ball `index` after validating it; the energy change is booked as external work.
   void setBall(std::size_t index, const BallDef& ball);
 
+  /// Continues with a different set of balls (the ball-count spinner, deleting a ball): time,
+  /// counters and the budget carry on, and the energy the change adds or removes is booked as
+  /// external work. `balls` must be valid in this box (validateScene).
+  void replaceBalls(std::vector<BallDef> balls);
+
   /// s, the fixed physics step (> 0); one step per frame at 60 Hz by default.
   double dt() const { return dt_; }
   void setDt(double dt);
