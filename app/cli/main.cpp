@@ -1,0 +1,125 @@
+// fooball-cli: the headless front end (DESIGN.md, "fooball-cli (headless)").
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+#include "fooball/scene_error.h"
+#include "list_command.h"
+#include "run_command.h"
+#include "run_options.h"
+#include "usage_error.h"
+
+namespace {
+
+using namespace fooball::cli;
+
+constexpr const char* kProgramName = "fooball-cli";
+
+/// Every failure is one line on stderr, so scripts and logs get a readable reason.
+int reportError(const std::string& message, int exitCode) {
+  std::cerr << kProgramName << ": error: " << message << '\n';
+  return exitCode;
+}
+
+/// Declares `run`'s flags; the ones without a default are read back by readRunFlags.
+struct RunFlags {
+  std::string scenePath;
+  double dt = 0.0;
+  std::string substeps;
+  std::string metricsPath;
+  std::string savePath;
+  CLI::Option* sceneFlag = nullptr;
+  CLI::Option* dtFlag = nullptr;
+  CLI::Option* substepsFlag = nullptr;
+  CLI::Option* metricsFlag = nullptr;
+  CLI::Option* saveFlag = nullptr;
+};
+
+void addRunFlags(CLI::App& run, RunOptions& options, RunFlags& flags) {
+  flags.sceneFlag =
+      run.add_option("--scene", flags.scenePath, "scene file (JSON) to run")->type_name("FILE");
+  run.add_option("--preset", options.presetName, "built-in scene to run (see 'list')")
+      ->type_name("NAME")
+      ->capture_default_str()
+      ->excludes(flags.sceneFlag);
+  run.add_option("--backend", options.backendName, "physics backend (see 'list')")
+      ->type_name("NAME")
+      ->capture_default_str();
+  run.add_option("--duration", options.duration, "simulated time to run, in seconds")
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  flags.dtFlag = run.add_option("--dt", flags.dt,
+                                "physics time step in seconds (default: the engine's fixed step)")
+                     ->type_name("SECONDS");
+  flags.substepsFlag =
+      run.add_option("--substeps", flags.substeps, "the same as --option substeps=N")
+          ->type_name("N");
+  run.add_option("--option", options.assignments, "set a backend option (repeatable)")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+  flags.metricsFlag =
+      run.add_option("--metrics", flags.metricsPath, "write metrics rows to a CSV file")
+          ->type_name("FILE.csv");
+  run.add_option("--every", options.every, "steps between metrics rows")
+      ->type_name("N")
+      ->capture_default_str();
+  flags.saveFlag = run.add_option("--save", flags.savePath, "save the final state as a scene file")
+                       ->type_name("FILE.json");
+  run.add_flag("--quiet", options.quiet, "print no summary and no progress");
+}
+
+void readRunFlags(const RunFlags& flags, RunOptions& options) {
+  if (flags.sceneFlag->count() > 0) options.scenePath = flags.scenePath;
+  if (flags.dtFlag->count() > 0) options.dt = flags.dt;
+  if (flags.substepsFlag->count() > 0) options.substeps = flags.substeps;
+  if (flags.metricsFlag->count() > 0) options.metricsPath = flags.metricsPath;
+  if (flags.saveFlag->count() > 0) options.savePath = flags.savePath;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"FooBall: bouncing balls on interchangeable physics backends, headless.",
+               kProgramName};
+  app.require_subcommand(1);
+  app.footer("Exit codes: 0 ok, 2 bad arguments or bad scene, 1 any other failure.");
+  CLI::App* list = app.add_subcommand("list", "list the backends with their options, and presets");
+  CLI::App* run = app.add_subcommand("run", "run a scene and report energy and momentum");
+
+  RunOptions runOptions;
+  RunFlags runFlags;
+  addRunFlags(*run, runOptions, runFlags);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help arrives as a "success" error; CLI11 prints it. Real errors get our one line
+    // instead of CLI11's help dump.
+    if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(error);
+    return reportError(std::string(error.what()) + " (see '" + kProgramName + " --help')",
+                       kExitBadInput);
+  }
+
+  try {
+    if (list->parsed()) {
+      printList(std::cout);
+    } else {
+      readRunFlags(runFlags, runOptions);
+      runCommand(runOptions, std::cout);
+    }
+    std::cout.flush();
+    if (!std::cout) return reportError("writing to standard output failed", kExitFailure);
+  } catch (const UsageError& error) {
+    return reportError(error.what(), kExitBadInput);
+  } catch (const fooball::SceneError& error) {
+    return reportError(error.what(), kExitBadInput);
+  } catch (const std::invalid_argument& error) {
+    return reportError(error.what(), kExitBadInput);
+  } catch (const std::exception& error) {
+    return reportError(error.what(), kExitFailure);
+  }
+  return kExitOk;
+}

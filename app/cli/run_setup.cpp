@@ -1,0 +1,120 @@
+#include "run_setup.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+
+#include "fooball/presets.h"
+#include "fooball/scene_file.h"
+#include "number_text.h"
+#include "registry.h"
+#include "usage_error.h"
+
+namespace fooball::cli {
+
+namespace {
+
+void checkPositiveFinite(double value, const std::string& flag) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw UsageError(flag + ": must be a finite number > 0 (got " + roundTripText(value) + ")");
+  }
+}
+
+bool hasOption(const Backend& backend, std::string_view name) {
+  for (const OptionSpec& spec : backend.options().specs()) {
+    if (spec.name == name) return true;
+  }
+  return false;
+}
+
+std::string optionNamesText(const Backend& backend) {
+  std::string names;
+  for (const OptionSpec& spec : backend.options().specs()) {
+    names += (names.empty() ? "" : ", ") + spec.name;
+  }
+  return names.empty() ? "it has no options" : "its options: " + names;
+}
+
+/// Applies "KEY=VALUE", adding which flag and backend it came from to the option's own message.
+void applyOption(Backend& backend, const RunOptions& options, const std::string& flagText,
+                 const std::string& assignment) {
+  try {
+    backend.setOptionFromText(assignment);
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(flagText + ": backend '" + options.backendName + "': " + error.what());
+  }
+}
+
+}  // namespace
+
+void checkRunNumbers(const RunOptions& options) {
+  checkPositiveFinite(options.duration, "--duration");
+  if (options.dt) checkPositiveFinite(*options.dt, "--dt");
+  if (options.every < 1) {
+    throw UsageError("--every: must be a whole number >= 1 (got " + std::to_string(options.every) +
+                     ")");
+  }
+}
+
+std::uint64_t stepCount(double duration, double dt) {
+  const double steps = std::round(duration / dt);
+  if (steps < 1.0) {
+    throw UsageError("--duration " + roundTripText(duration) + " s is less than half a step (dt " +
+                     roundTripText(dt) + " s)");
+  }
+  if (steps > static_cast<double>(kMaxRunSteps)) {
+    throw UsageError("--duration " + roundTripText(duration) + " s at dt " + roundTripText(dt) +
+                     " s is " + readableText(steps) + " steps, more than the limit of " +
+                     std::to_string(kMaxRunSteps));
+  }
+  return static_cast<std::uint64_t>(steps);
+}
+
+std::unique_ptr<Backend> configuredBackend(const RunOptions& options) {
+  std::unique_ptr<Backend> backend = createBackend(options.backendName);
+  if (options.substeps) {
+    if (!hasOption(*backend, "substeps")) {
+      throw UsageError("--substeps: backend '" + options.backendName +
+                       "' has no 'substeps' option (" + optionNamesText(*backend) + ")");
+    }
+    applyOption(*backend, options, "--substeps " + *options.substeps,
+                "substeps=" + *options.substeps);
+  }
+  for (const std::string& assignment : options.assignments) {
+    applyOption(*backend, options, "--option " + assignment, assignment);
+  }
+  return backend;
+}
+
+Scene loadRunScene(const RunOptions& options) {
+  if (options.scenePath) return loadSceneFile(*options.scenePath);
+  return loadPreset(options.presetName);
+}
+
+std::string sceneSource(const RunOptions& options) {
+  if (options.scenePath) return options.scenePath->string();
+  return "preset '" + options.presetName + "'";
+}
+
+std::vector<std::string> changedOptions(const Backend& backend) {
+  std::vector<std::string> changed;
+  for (const OptionSpec& spec : backend.options().specs()) {
+    const double value = backend.options().value(spec.name);
+    if (value != spec.defaultValue) changed.push_back(spec.name + "=" + roundTripText(value));
+  }
+  return changed;
+}
+
+void checkWritableFile(const std::filesystem::path& path, const std::string& flag) {
+  const std::string where = flag + " '" + path.string() + "'";
+  if (path.empty()) throw UsageError(flag + ": empty file name");
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw UsageError(where + ": is a directory");
+  const std::filesystem::path directory =
+      path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+  if (!std::filesystem::is_directory(directory, ignored)) {
+    throw UsageError(where + ": no such directory '" + directory.string() + "'");
+  }
+}
+
+}  // namespace fooball::cli

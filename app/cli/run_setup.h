@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fooball/backend.h"
+#include "fooball/scene.h"
+#include "run_options.h"
+
+namespace fooball::cli {
+
+/// Checks --duration, --dt and --every on their own (finite, positive, ≥ 1); throws UsageError.
+void checkRunNumbers(const RunOptions& options);
+
+/// round(duration / dt), checked to be in [1, kMaxRunSteps]; throws UsageError.
+std::uint64_t stepCount(double duration, double dt);
+
+/// The backend named by --backend with --substeps and every --option applied, in that order.
+/// Throws UsageError naming the flag, the backend and (for an unknown option) its options;
+/// std::invalid_argument listing the known backends for an unknown name.
+std::unique_ptr<Backend> configuredBackend(const RunOptions& options);
+
+/// The scene of --scene or --preset; throws SceneError naming the file or preset and the place.
+Scene loadRunScene(const RunOptions& options);
+
+/// How the summary names where the scene came from: the file path or "preset 'NAME'".
+std::string sceneSource(const RunOptions& options);
+
+/// "KEY=VALUE" for every option of `backend` that is not at its default.
+std::vector<std::string> changedOptions(const Backend& backend);
+
+/// Throws UsageError unless `path` could be created: a file name in an existing directory.
+/// Lets --save fail before the run instead of after it.
+void checkWritableFile(const std::filesystem::path& path, const std::string& flag);
+
+}  // namespace fooball::cli
