@@ -3,34 +3,15 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <map>
-#include <new>
 #include <string>
 
+#include "allocation_counter.h"
 #include "fooball/metrics.h"
 #include "fooball/simulation.h"
 #include "registry.h"
 #include "test_scenes.h"
-
-// Counts every operator new in this test binary, to prove steps do not allocate.
-namespace {
-std::atomic<long> allocationCount{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++allocationCount;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace fooball {
 namespace {
@@ -322,11 +303,11 @@ TEST_P(Conformance, StepsDoNotAllocateInSteadyState) {
   std::vector<Vec2> forces(scene.balls.size(), Vec2{0.1, 0.0});
   run(*backend, 2.0);  // warm up: buffers grow to their working size
   backend->step(1.0 / 60.0, forces);
-  const long before = allocationCount.load();
+  const long before = testing::allocationCount();
   for (int i = 0; i < 60; ++i) {
     backend->step(1.0 / 60.0, i % 2 ? std::span<const Vec2>(forces) : std::span<const Vec2>());
   }
-  EXPECT_EQ(allocationCount.load() - before, 0);
+  EXPECT_EQ(testing::allocationCount() - before, 0);
 }
 
 TEST_P(Conformance, OptionsHaveValidDefaultsAndRejectNonsense) {

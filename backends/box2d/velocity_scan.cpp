@@ -1,0 +1,26 @@
+#include "velocity_scan.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fooball::box2d_detail {
+
+VelocityScan scanVelocities(std::span<b2Body* const> balls, std::span<const double> masses,
+                            double capSpeed) {
+  VelocityScan scan;
+  double fastestSquared = 0.0;
+  const double capSquared = capSpeed * capSpeed;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const b2Vec2 v = balls[i]->GetLinearVelocity();
+    const Vec2 velocity{static_cast<double>(v.x), static_cast<double>(v.y)};
+    const double speedSquared = lengthSquared(velocity);
+    fastestSquared = std::max(fastestSquared, speedSquared);
+    scan.massSpeedSquared += masses[i] * speedSquared;
+    scan.momentum += masses[i] * velocity;
+    if (speedSquared >= capSquared) ++scan.ballsAtCap;
+  }
+  scan.fastestSpeed = std::sqrt(fastestSquared);
+  return scan;
+}
+
+}  // namespace fooball::box2d_detail

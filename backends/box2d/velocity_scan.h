@@ -1,0 +1,27 @@
+#pragma once
+
+#include <box2d/b2_body.h>
+
+#include <cstdint>
+#include <span>
+
+#include "fooball/vec2.h"
+
+namespace fooball::box2d_detail {
+
+/// What one pass over the balls' velocities between two Box2D steps tells the step loop: the
+/// fastest speed (auto_substeps), the sums the drag accounting needs, and the cap hits of the
+/// step just taken.
+struct VelocityScan {
+  double fastestSpeed = 0.0;      ///< m/s
+  double massSpeedSquared = 0.0;  ///< kg·m²/s², Σ m|v|² (twice the kinetic energy)
+  Vec2 momentum;                  ///< N·s, Σ m v
+  std::uint64_t ballsAtCap = 0;   ///< balls at or above `capSpeed`
+};
+
+/// `masses` (kg) are the scene's, in the order of `balls`; `capSpeed` in m/s (infinity: count
+/// none).
+VelocityScan scanVelocities(std::span<b2Body* const> balls, std::span<const double> masses,
+                            double capSpeed);
+
+}  // namespace fooball::box2d_detail

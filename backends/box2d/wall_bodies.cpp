@@ -1,0 +1,80 @@
+#include "wall_bodies.h"
+
+#include <box2d/b2_polygon_shape.h>
+
+#include "collision_filter.h"
+#include "elastic_fixture.h"
+
+namespace fooball::box2d_detail {
+
+namespace {
+
+enum Side { kLeft, kRight, kBottom, kTop, kSideCount };
+
+/// m. Why thick boxes rather than edges: continuous collision against static bodies stops most
+/// fast balls at the surface, but not all (it gives up after b2_maxSubSteps, and position
+/// correction can squeeze a crowded ball in). A ball whose centre crossed a thin wall is pushed
+/// out on the far side and lost. Box2D pushes a ball inside a polygon out through the nearest
+/// face, and a ball moves at most b2_maxTranslation per Box2D step, so with this thickness its
+/// centre stays in the inner half and the nearest face is the one facing into the box.
+constexpr float kWallThickness = 4.0f * b2_maxTranslation;
+
+/// m. Box2D polygons carry a skin of b2_polygonRadius (1 cm) that collides like the surface
+/// (b2_shape.h: polygons must keep it). Moving every inner face out by the skin puts the
+/// surface balls bounce off exactly on the box edge instead of 1 cm inside it.
+constexpr float kSkin = b2_polygonRadius;
+
+/// An axis-aligned slab [x0,x1] × [y0,y1] (m). Corners are given directly rather than as
+/// centre ± half-size, so the inner face is the float of the box edge plus the skin, rounded once.
+b2PolygonShape slab(float x0, float y0, float x1, float y1) {
+  const b2Vec2 corners[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  b2PolygonShape shape;
+  shape.Set(corners, 4);
+  return shape;
+}
+
+/// The slab of one side. Every slab reaches a thickness past the box's corners, so a ball
+/// cannot slip out where two walls meet.
+b2PolygonShape sideSlab(Side side, const Box& box) {
+  const float width = static_cast<float>(box.width);
+  const float height = static_cast<float>(box.height);
+  const float low = -kSkin - kWallThickness;
+  const float highX = width + kSkin + kWallThickness;
+  const float highY = height + kSkin + kWallThickness;
+  switch (side) {
+    case kLeft:
+      return slab(low, low, -kSkin, highY);
+    case kRight:
+      return slab(width + kSkin, low, highX, highY);
+    case kBottom:
+      return slab(low, low, highX, -kSkin);
+    default:
+      return slab(low, height + kSkin, highX, highY);
+  }
+}
+
+b2Body* createWall(b2World& world, Side side, const Box& box) {
+  const b2BodyDef def;  // static, at the origin: the slab's vertices are world coordinates
+  b2Body* body = world.CreateBody(&def);
+  const b2PolygonShape shape = sideSlab(side, box);
+  const b2FixtureDef fixture = elasticFixtureDef(shape, 0.0f, wallFilter());
+  body->CreateFixture(&fixture);
+  return body;
+}
+
+}  // namespace
+
+void WallBodies::sync(b2World& world, const Box& box, const Walls& walls) {
+  const std::array<bool, 4> on = {walls.left, walls.right, walls.bottom, walls.top};
+  for (int side = kLeft; side < kSideCount; ++side) {
+    b2Body*& body = bodies_[side];
+    if (on[side] && body == nullptr) {
+      body = createWall(world, static_cast<Side>(side), box);
+    } else if (!on[side] && body != nullptr) {
+      world.DestroyBody(body);
+      body = nullptr;
+    }
+  }
+}
+
+}  // namespace fooball::box2d_detail
