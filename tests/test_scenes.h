@@ -1,10 +1,20 @@
 #pragma once
 
 #include <cstdint>
+#include <ostream>
 #include <vector>
 
 #include "fooball/random_balls.h"
 #include "fooball/scene.h"
+
+namespace fooball {
+
+/// Lets GoogleTest print a Vec2 in failure messages as (x, y) instead of 16 raw bytes.
+inline void PrintTo(Vec2 v, std::ostream* out) {
+  *out << "(" << v.x << ", " << v.y << ")";
+}
+
+}  // namespace fooball
 
 namespace fooball::testing {
 

@@ -92,7 +92,8 @@ void Simulation::setBall(std::size_t index, const BallDef& ball) {
     throw SceneError(where + ": no such ball (the scene has " + std::to_string(ballCount()) + ")");
   }
   validateBall(ball, box_, world_.walls, where);
-  for (std::size_t other = 0; other < ballCount(); ++other) {
+  // As in the scene format: with ball collisions off, balls pass through each other freely.
+  for (std::size_t other = 0; world_.ballCollisions && other < ballCount(); ++other) {
     if (other == index) continue;
     const double reach = ball.radius + radii_[other];
     const double depth = reach - length(ball.position - positions_[other]);
@@ -149,6 +150,7 @@ void Simulation::step() {
 }
 
 void Simulation::run(double seconds) {
+  if (!(seconds > 0.0) || !std::isfinite(seconds)) return;
   const auto count = static_cast<std::uint64_t>(std::llround(seconds / dt_));
   for (std::uint64_t i = 0; i < count; ++i)
     step();
@@ -156,9 +158,16 @@ void Simulation::run(double seconds) {
 
 int Simulation::advance(double elapsedSeconds, double timeScale, int maxSteps) {
   if (paused) return 0;
-  accumulator_ += elapsedSeconds * timeScale;
-  int count = static_cast<int>(std::min(std::floor(accumulator_ / dt_), double(maxSteps)));
-  accumulator_ = count == maxSteps ? 0.0 : accumulator_ - count * dt_;
+  const double simulatedSeconds = elapsedSeconds * timeScale;
+  if (simulatedSeconds > 0.0 && std::isfinite(simulatedSeconds)) accumulator_ += simulatedSeconds;
+  const double due = std::floor(accumulator_ / dt_);
+  int count = maxSteps;
+  if (due > maxSteps) {
+    accumulator_ = 0.0;  // the machine cannot keep up: drop the backlog rather than spiral
+  } else {
+    count = static_cast<int>(due);
+    accumulator_ -= count * dt_;
+  }
   for (int i = 0; i < count; ++i)
     step();
   return count;

@@ -52,7 +52,8 @@ class Simulation {
 
   /// One physics step of dt(), paused or not.
   void step();
-  /// Runs whole steps for `seconds` of simulated time (rounded to whole steps).
+  /// Runs whole steps for `seconds` of simulated time (rounded to whole steps; none when
+  /// `seconds` is not a positive finite number).
   void run(double seconds);
 
   bool paused = false;
