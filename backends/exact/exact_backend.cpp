@@ -1,0 +1,104 @@
+#include "exact/exact_backend.h"
+
+#include <string>
+#include <utility>
+
+#include "exact/event_driven_world.h"
+
+namespace fooball {
+
+namespace {
+
+constexpr const char* kRestBounceTime = "rest_bounce_time";
+constexpr const char* kMaxEventsPerBall = "max_events_per_ball";
+
+std::vector<OptionSpec> exactOptionSpecs() {
+  const exact::EventLimits defaults;
+  return {
+      {kRestBounceTime,
+       "s; a wall bounce under gravity returning sooner than this leaves the ball resting on the "
+       "wall (drops at most m(g t/2)^2/2 of energy)",
+       defaults.restBounceTime, 0.0, 1.0, false},
+      {kMaxEventsPerBall,
+       "events per ball in one step (as for at least 500 balls) before the step is cut short",
+       defaults.maxEventsPerBall, 1.0, 1e9, true},
+  };
+}
+
+/// The `exact` backend: the event-driven solver behind the Backend interface, plus what the
+/// solver does not need (scene name, colours).
+class ExactBackend final : public Backend {
+ public:
+  ExactBackend() : Backend(exactOptionSpecs()) { ExactBackend::optionsChanged(); }
+
+  void load(const Scene& scene) override {
+    name_ = scene.name;
+    colors_.clear();
+    for (const BallDef& ball : scene.balls)
+      colors_.push_back(ball.color);
+    world_.load(scene);
+  }
+
+  Scene save() const override {
+    Scene scene;
+    scene.name = name_;
+    scene.box = world_.box();
+    scene.world = world_.world();
+    scene.balls.resize(world_.ballCount());
+    for (std::size_t ball = 0; ball < scene.balls.size(); ++ball) {
+      scene.balls[ball] = {world_.position(ball), world_.velocity(ball), world_.radius(ball),
+                           world_.mass(ball), colors_[ball]};
+    }
+    return scene;
+  }
+
+  void setWorld(const WorldSettings& world) override { world_.setWorld(world); }
+
+  void step(double dt, std::span<const Vec2> forces) override { world_.step(dt, forces); }
+
+  void setBall(std::size_t index, const BallDef& ball) override {
+    colors_[index] = ball.color;
+    world_.setBall(index, ball);
+  }
+
+  std::size_t ballCount() const override { return world_.ballCount(); }
+
+  void readState(std::span<Vec2> positions, std::span<Vec2> velocities) const override {
+    for (std::size_t ball = 0; ball < world_.ballCount(); ++ball) {
+      positions[ball] = world_.position(ball);
+      velocities[ball] = world_.velocity(ball);
+    }
+  }
+
+  BackendCounters counters() const override { return world_.counters(); }
+
+  std::vector<Diagnostic> diagnostics() const override {
+    const exact::EventStatistics& statistics = world_.statistics();
+    return {
+        {"events", static_cast<double>(statistics.events)},
+        {"events_this_step", static_cast<double>(statistics.eventsThisStep)},
+        {"collisions_this_step", static_cast<double>(statistics.collisionsThisStep)},
+        {"cut_short_steps", static_cast<double>(statistics.cutShortSteps)},
+        {"resting_balls", static_cast<double>(world_.restingBallCount())},
+        {"rest_energy_change", statistics.restEnergyChange},
+    };
+  }
+
+ protected:
+  void optionsChanged() override {
+    world_.setLimits({options_.value(kRestBounceTime), options_.value(kMaxEventsPerBall)});
+  }
+
+ private:
+  std::string name_;
+  std::vector<std::uint32_t> colors_;
+  exact::EventDrivenWorld world_;
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> makeExactBackend() {
+  return std::make_unique<ExactBackend>();
+}
+
+}  // namespace fooball

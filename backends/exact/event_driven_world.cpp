@@ -1,0 +1,209 @@
+#include "exact/event_driven_world.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace fooball::exact {
+
+namespace {
+
+/// Legitimate chains of simultaneous events (a Newton's cradle passes the momentum through one
+/// ball per event) are at most a few per ball; a longer run at one instant is a zero-time loop.
+constexpr std::uint64_t kSimultaneousEventsPerBall = 16;
+constexpr std::uint64_t kSimultaneousEventsFloor = 1024;
+/// The event cap counts as for at least this many balls, so tiny scenes are not cut short.
+constexpr std::size_t kEventCapFloorBalls = 500;
+/// With more kicked balls than 1 in this many, predicting everything again is cheaper.
+constexpr std::size_t kKickedFractionForRebuild = 8;
+
+}  // namespace
+
+void EventDrivenWorld::load(const Scene& scene) {
+  box_ = scene.box;
+  world_ = scene.world;
+  const std::size_t count = scene.balls.size();
+  balls_.assign(count, BallMotion{});
+  mass_.resize(count);
+  for (std::size_t ball = 0; ball < count; ++ball) {
+    const BallDef& def = scene.balls[ball];
+    balls_[ball].position = def.position;
+    balls_[ball].velocity = def.velocity;
+    balls_[ball].radius = def.radius;
+    mass_[ball] = def.mass;
+  }
+  restingOn_.assign(count, 0);
+  restingCount_ = 0;
+  forced_.clear();
+  forced_.reserve(count);
+  counters_ = {};
+  statistics_ = {};
+  calendarValid_ = false;
+  now_ = 0.0;
+}
+
+void EventDrivenWorld::setWorld(const WorldSettings& world) {
+  world_ = world;
+  calendarValid_ = false;
+}
+
+void EventDrivenWorld::setBall(std::size_t index, const BallDef& ball) {
+  balls_[index].position = ball.position;
+  balls_[index].velocity = ball.velocity;
+  balls_[index].radius = ball.radius;
+  mass_[index] = ball.mass;
+  calendarValid_ = false;
+}
+
+void EventDrivenWorld::step(double dt, std::span<const Vec2> forces) {
+  statistics_.eventsThisStep = 0;
+  statistics_.collisionsThisStep = 0;
+  if (ballCount() == 0) return;
+  applyForces(dt, forces);
+  if (!calendarValid_) rebuild();
+  const bool completed = runEvents(dt);
+  for (std::uint32_t ball = 0; ball < ballCount(); ++ball)
+    advance(ball, dt);
+  if (!completed) {
+    ++statistics_.cutShortSteps;
+    confineToWalls();
+    calendarValid_ = false;
+  }
+  moveOriginTo(dt);
+}
+
+void EventDrivenWorld::applyForces(double dt, std::span<const Vec2> forces) {
+  forced_.clear();
+  const std::size_t count = std::min(forces.size(), ballCount());
+  for (std::uint32_t ball = 0; ball < count; ++ball) {
+    if (forces[ball] == Vec2{}) continue;
+    balls_[ball].velocity += (dt / mass_[ball]) * forces[ball];
+    ++balls_[ball].version;
+    liftIfMoving(ball);
+    forced_.push_back(ball);
+  }
+  if (!calendarValid_ || forced_.empty()) return;
+  if (forced_.size() * kKickedFractionForRebuild > ballCount()) {
+    calendarValid_ = false;
+    return;
+  }
+  for (std::uint32_t ball : forced_)
+    predict(ball);
+}
+
+void EventDrivenWorld::rebuild() {
+  now_ = 0.0;
+  const std::uint32_t count = static_cast<std::uint32_t>(ballCount());
+  double largestRadius = 0.0;
+  for (BallMotion& ball : balls_) {
+    ++ball.version;
+    ball.interactionTime = std::numeric_limits<double>::infinity();
+    largestRadius = std::max(largestRadius, ball.radius);
+  }
+  cellsActive_ = world_.ballCollisions && count > 1;
+  if (cellsActive_) {
+    cells_.configure(box_.width, box_.height, 2.0 * largestRadius, count);
+    for (std::uint32_t ball = 0; ball < count; ++ball)
+      cells_.insert(ball, balls_[ball].position);
+  }
+  schedule_.assign(count, BallSchedule{});
+  restingOn_.assign(count, 0);
+  restingCount_ = 0;
+  calendar_.reset(count);
+  for (std::uint32_t ball = 0; ball < count; ++ball)
+    predict(ball);
+  calendarValid_ = true;
+}
+
+bool EventDrivenWorld::runEvents(double dt) {
+  const double eventCap =
+      limits_.maxEventsPerBall * static_cast<double>(std::max(ballCount(), kEventCapFloorBalls));
+  const std::uint64_t simultaneousCap =
+      kSimultaneousEventsPerBall * ballCount() + kSimultaneousEventsFloor;
+  std::uint64_t simultaneous = 0;
+  double previousTime = -std::numeric_limits<double>::infinity();
+  while (true) {
+    const std::uint32_t ball = calendar_.earliest();
+    const double time = calendar_.earliestTime();
+    if (!(time <= dt)) return true;
+    if (static_cast<double>(statistics_.eventsThisStep) >= eventCap) return false;
+    if (time == previousTime) {
+      if (++simultaneous > simultaneousCap) return false;
+    } else {
+      simultaneous = 0;
+      previousTime = time;
+    }
+    now_ = time;
+    ++statistics_.eventsThisStep;
+    ++statistics_.events;
+    const BallSchedule& schedule = schedule_[ball];
+    if (schedule.crossing.time < schedule.interaction.time) {
+      crossCell(ball, schedule.crossing.face);
+    } else {
+      handle(ball, schedule.interaction);
+    }
+  }
+}
+
+void EventDrivenWorld::confineToWalls() {
+  for (std::uint32_t ball = 0; ball < ballCount(); ++ball) {
+    for (int side = 0; side < 4; ++side) {
+      const Side wall = static_cast<Side>(side);
+      if (!wallOn(wall)) continue;
+      const int axis = axisOf(wall);
+      const double inward = isLowerSide(wall) ? 1.0 : -1.0;
+      const double contact = contactCoordinate(wall, balls_[ball].radius);
+      double& coordinate = componentRef(balls_[ball].position, axis);
+      if (inward * (coordinate - contact) < 0.0) coordinate = contact;
+      double& normalVelocity = componentRef(balls_[ball].velocity, axis);
+      if (coordinate == contact && inward * normalVelocity < 0.0) {
+        counters_.wallImpulse += 2.0 * mass_[ball] * std::abs(normalVelocity);
+        ++counters_.wallCollisions;
+        normalVelocity = -normalVelocity;
+      }
+    }
+  }
+}
+
+void EventDrivenWorld::moveOriginTo(double dt) {
+  for (BallMotion& ball : balls_) {
+    ball.time = 0.0;
+    ball.interactionTime -= dt;
+  }
+  if (calendarValid_) {
+    for (BallSchedule& schedule : schedule_) {
+      schedule.interaction.time -= dt;
+      schedule.crossing.time -= dt;
+    }
+    calendar_.shiftOrigin(dt);
+  }
+  now_ = 0.0;
+}
+
+bool EventDrivenWorld::wallOn(Side side) const {
+  switch (side) {
+    case Side::Left:
+      return world_.walls.left;
+    case Side::Right:
+      return world_.walls.right;
+    case Side::Bottom:
+      return world_.walls.bottom;
+    case Side::Top:
+      return world_.walls.top;
+  }
+  return false;
+}
+
+double EventDrivenWorld::contactCoordinate(Side wall, double radius) const {
+  switch (wall) {
+    case Side::Left:
+    case Side::Bottom:
+      return radius;
+    case Side::Right:
+      return box_.width - radius;
+    case Side::Top:
+      return box_.height - radius;
+  }
+  return radius;
+}
+
+}  // namespace fooball::exact

@@ -1,0 +1,129 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "exact/axis.h"
+#include "exact/ball_motion.h"
+#include "exact/event.h"
+#include "exact/event_calendar.h"
+#include "exact/event_cells.h"
+#include "fooball/backend.h"
+#include "fooball/scene.h"
+
+namespace fooball::exact {
+
+/// Guards against event explosions; both are backend options (exact_backend.cpp).
+struct EventLimits {
+  /// s. A wall bounce under gravity whose flight back would last less than this leaves the ball
+  /// resting on the wall: its normal speed (at most g·t/2) is dropped and the wall carries
+  /// gravity's normal component from then on. Without it a ball lying on the floor within
+  /// rounding bounces at an unbounded rate.
+  double restBounceTime = 1e-6;
+  /// Average events per ball in one step (counted as for at least 500 balls) before the step is
+  /// cut short: a pile resting on resting balls under gravity has no finite event sequence.
+  double maxEventsPerBall = 200.0;
+};
+
+/// What the solver did, beside the backend counters.
+struct EventStatistics {
+  std::uint64_t events = 0;  ///< events handled since load (collisions, bounces, cell crossings)
+  std::uint64_t eventsThisStep = 0;
+  std::uint64_t collisionsThisStep = 0;
+  std::uint64_t cutShortSteps = 0;  ///< steps that hit the event cap or a zero-time loop
+  double restEnergyChange = 0.0;    ///< J, energy changed by laying balls to rest on walls
+};
+
+/// Event-driven hard-disk dynamics with exact free flight (free_flight.h).
+///
+/// Each ball keeps its state at its own last-update time and is advanced only when an event
+/// involves it; each has one entry in the calendar, the earlier of its next interaction and its
+/// next cell crossing; cells bound the partners a ball must be checked against, so an event
+/// costs O(log N) whatever N. Time inside a step runs
+/// from 0 (the step's start) to dt; at the end every ball is brought to dt and the origin moves
+/// there, so the state read between steps is exact and times stay small.
+class EventDrivenWorld {
+ public:
+  void setLimits(const EventLimits& limits) { limits_ = limits; }
+
+  /// Takes the scene (already validated) and zeroes counters and statistics.
+  void load(const Scene& scene);
+  void setWorld(const WorldSettings& world);
+  void setBall(std::size_t index, const BallDef& ball);
+
+  /// Applies forces[i]·dt as impulses (N·s) now, then advances exactly dt seconds.
+  void step(double dt, std::span<const Vec2> forces);
+
+  std::size_t ballCount() const { return balls_.size(); }
+  const Box& box() const { return box_; }
+  const WorldSettings& world() const { return world_; }
+  Vec2 position(std::size_t ball) const { return balls_[ball].position; }
+  Vec2 velocity(std::size_t ball) const { return balls_[ball].velocity; }
+  double radius(std::size_t ball) const { return balls_[ball].radius; }
+  double mass(std::size_t ball) const { return mass_[ball]; }
+
+  const BackendCounters& counters() const { return counters_; }
+  const EventStatistics& statistics() const { return statistics_; }
+  std::size_t restingBallCount() const { return restingCount_; }
+
+ private:
+  // event_driven_world.cpp: the step.
+  void applyForces(double dt, std::span<const Vec2> forces);
+  void rebuild();
+  bool runEvents(double dt);
+  void confineToWalls();
+  void moveOriginTo(double dt);
+
+  // event_prediction.cpp: each ball's next events.
+  void predict(std::uint32_t ball);
+  void crossCell(std::uint32_t ball, Side side);
+  bool wallReachable(std::uint32_t ball, Side wall) const;
+  Event wallContact(std::uint32_t ball, Side wall) const;
+  CellCrossing nextCellCrossing(std::uint32_t ball) const;
+  void checkPair(std::uint32_t ball, std::uint32_t other, Event& next);
+  static void keepEarlier(Event& next, const Event& candidate);
+  void setInteraction(std::uint32_t ball, const Event& interaction);
+  void reschedule(std::uint32_t ball);
+
+  // event_handling.cpp: what events do.
+  void advance(std::uint32_t ball, double time);
+  void handle(std::uint32_t ball, const Event& interaction);
+  void collide(std::uint32_t first, std::uint32_t second);
+  void bounce(std::uint32_t ball, Side wall);
+  void layToRest(std::uint32_t ball, Side wall);
+  void liftIfMoving(std::uint32_t ball);
+
+  /// m/s², the gravity the ball feels (less what walls it rests on carry).
+  Vec2 gravityOf(std::uint32_t ball) const {
+    return restingCount_ == 0 ? world_.gravity : gravityOn(restingOn_[ball], world_.gravity);
+  }
+  bool restsAlong(std::uint32_t ball, int axis) const {
+    return restingCount_ != 0 && (restingOn_[ball] & axisSideBits(axis)) != 0;
+  }
+  bool wallOn(Side side) const;
+  /// m, the centre coordinate at which a ball of `radius` touches `wall`.
+  double contactCoordinate(Side wall, double radius) const;
+
+  Box box_;
+  WorldSettings world_;
+  EventLimits limits_;
+
+  std::vector<BallMotion> balls_;        ///< in scene order
+  std::vector<double> mass_;             ///< kg, per ball
+  std::vector<BallSchedule> schedule_;   ///< per ball
+  std::vector<std::uint8_t> restingOn_;  ///< per ball, sideBit() of each wall it rests on
+  std::size_t restingCount_ = 0;         ///< balls resting on some wall
+  std::vector<std::uint32_t> forced_;    ///< balls kicked by this step's forces
+
+  EventCalendar calendar_;
+  EventCells cells_;
+  bool cellsActive_ = false;    ///< ball collisions on and at least two balls
+  bool calendarValid_ = false;  ///< false after load, setWorld, setBall or a cut-short step
+  double now_ = 0.0;            ///< s since the step began
+
+  BackendCounters counters_;
+  EventStatistics statistics_;
+};
+
+}  // namespace fooball::exact

@@ -1,0 +1,131 @@
+#include <algorithm>
+
+#include "exact/barrier_contact.h"
+#include "exact/event_driven_world.h"
+#include "exact/free_flight.h"
+#include "exact/pair_contact.h"
+
+namespace fooball::exact {
+
+void EventDrivenWorld::predict(std::uint32_t ball) {
+  advance(ball, now_);
+  Event next;
+  for (int side = 0; side < 4; ++side) {
+    const Side wall = static_cast<Side>(side);
+    if (wallReachable(ball, wall)) keepEarlier(next, wallContact(ball, wall));
+  }
+  if (cellsActive_) {
+    schedule_[ball].crossing = nextCellCrossing(ball);
+    cells_.forEachNeighbour(ball, [&](std::uint32_t other) { checkPair(ball, other, next); });
+  }
+  setInteraction(ball, next);
+}
+
+/// The ball's motion is unchanged by a crossing, so its interaction event stands (or, if its
+/// partner has changed since, is caught when it comes due); only the cells that have just come
+/// within reach need checking.
+void EventDrivenWorld::crossCell(std::uint32_t ball, Side side) {
+  advance(ball, now_);
+  cells_.cross(ball, side);
+  schedule_[ball].crossing = nextCellCrossing(ball);
+  Event next = schedule_[ball].interaction;
+  if (wallReachable(ball, side)) keepEarlier(next, wallContact(ball, side));
+  cells_.forEachNewNeighbour(ball, side,
+                             [&](std::uint32_t other) { checkPair(ball, other, next); });
+  setInteraction(ball, next);
+}
+
+/// With cells, a ball can touch a wall only from the row or column of cells along it (cells are
+/// wider than any radius), so walls are checked there only.
+bool EventDrivenWorld::wallReachable(std::uint32_t ball, Side wall) const {
+  if (!wallOn(wall)) return false;
+  if (!cellsActive_) return true;
+  const int axis = axisOf(wall);
+  const int cell = axis == 0 ? cells_.columnOf(ball) : cells_.rowOf(ball);
+  return isLowerSide(wall) ? cell == 0 : cell + 1 == cells_.cellCount(axis);
+}
+
+Event EventDrivenWorld::wallContact(std::uint32_t ball, Side wall) const {
+  const BallMotion& motion = balls_[ball];
+  const int axis = axisOf(wall);
+  if (restsAlong(ball, axis)) return {};               // fixed along this axis
+  const double sign = isLowerSide(wall) ? 1.0 : -1.0;  // the gap grows with sign·x
+  const double delay = firstBarrierContact(
+      sign * (component(motion.position, axis) - contactCoordinate(wall, motion.radius)),
+      sign * component(motion.velocity, axis), sign * component(gravityOf(ball), axis),
+      world_.airResistance);
+  return {now_ + delay, 0, static_cast<std::uint32_t>(wall), EventKind::Wall};
+}
+
+CellCrossing EventDrivenWorld::nextCellCrossing(std::uint32_t ball) const {
+  const BallMotion& motion = balls_[ball];
+  const Vec2 gravity = gravityOf(ball);
+  CellCrossing next;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (restsAlong(ball, axis)) continue;
+    const double coordinate = component(motion.position, axis);
+    const double rate = component(motion.velocity, axis);
+    const double acceleration = component(gravity, axis);
+    const int cell = axis == 0 ? cells_.columnOf(ball) : cells_.rowOf(ball);
+    // Border cells reach to infinity outwards: no face there.
+    if (cell > 0) {
+      const double delay = firstBarrierContact(coordinate - cells_.lowerFace(axis, cell), rate,
+                                               acceleration, world_.airResistance);
+      if (now_ + delay < next.time) next = {now_ + delay, lowerSide(axis)};
+    }
+    if (cell + 1 < cells_.cellCount(axis)) {
+      const double delay = firstBarrierContact(cells_.upperFace(axis, cell) - coordinate, -rate,
+                                               -acceleration, world_.airResistance);
+      if (now_ + delay < next.time) next = {now_ + delay, upperSide(axis)};
+    }
+  }
+  return next;
+}
+
+/// Predicts the contact of `ball` (advanced to now) with `other`. If it comes before `next`,
+/// it becomes the ball's next interaction; if before the other's, the other's too, so each
+/// ball's interaction event stays its earliest. The event it displaces there needs no removal:
+/// its own partner's version check, or a fresh prediction when it comes due, catches it.
+void EventDrivenWorld::checkPair(std::uint32_t ball, std::uint32_t other, Event& next) {
+  const BallMotion& motion = balls_[ball];
+  const BallMotion& partner = balls_[other];
+  const double drag = world_.airResistance;
+  const FlightFactors flight = flightFactors(drag, now_ - partner.time);
+  const Vec2 gravity = gravityOf(ball);
+  const Vec2 partnerGravity = gravityOf(other);
+  const PairMotion pair{(partner.position - motion.position) +
+                            flightDisplacement(partner.velocity, partnerGravity, flight),
+                        flightVelocity(partner.velocity, partnerGravity, flight) - motion.velocity,
+                        partnerGravity - gravity, motion.radius + partner.radius};
+  EventKind kind = EventKind::Pair;
+  double delay;
+  if (partnerGravity == gravity) {
+    delay = timeForFlightParameter(
+        drag, linearContactParameter(pair.separation, pair.relativeVelocity, pair.reach));
+  } else {
+    const double horizon = std::max(next.time, partner.interactionTime) - now_;
+    const PairContact contact = acceleratedPairContact(pair, drag, horizon);
+    if (contact.kind == PairContactKind::None) return;
+    if (contact.kind == PairContactKind::Recheck) kind = EventKind::Recheck;
+    delay = contact.time;
+  }
+  const double time = now_ + delay;
+  if (time < next.time) next = {time, partner.version, other, kind};
+  if (time < partner.interactionTime) setInteraction(other, {time, motion.version, ball, kind});
+}
+
+void EventDrivenWorld::keepEarlier(Event& next, const Event& candidate) {
+  if (candidate.time < next.time) next = candidate;
+}
+
+void EventDrivenWorld::setInteraction(std::uint32_t ball, const Event& interaction) {
+  schedule_[ball].interaction = interaction;
+  balls_[ball].interactionTime = interaction.time;
+  reschedule(ball);
+}
+
+void EventDrivenWorld::reschedule(std::uint32_t ball) {
+  calendar_.set(ball, schedule_[ball].earliest());
+}
+
+}  // namespace fooball::exact
