@@ -1,0 +1,54 @@
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace fooball::gui {
+
+/// The lowest and highest finite value seen; empty until the first one.
+struct ValueRange {
+  double low = std::numeric_limits<double>::infinity();
+  double high = -std::numeric_limits<double>::infinity();
+
+  bool empty() const { return low > high; }
+  void include(double value) {
+    if (value < low) low = value;
+    if (value > high) high = value;
+  }
+  void include(const ValueRange& other) {
+    if (other.empty()) return;
+    include(other.low);
+    include(other.high);
+  }
+};
+
+/// An axis range with ticks at multiples of `tickInterval`.
+struct AxisScale {
+  double min = 0.0;
+  double max = 1.0;
+  double tickInterval = 0.2;
+};
+
+/// The smallest of 1, 2, 5 × 10ᵏ that is ≥ `roughStep` (> 0); 1 for anything else.
+double niceStep(double roughStep);
+
+/// A value axis holding `data` with a little padding, ends on round ticks, about `ticks`
+/// intervals. Keeps `current` while the data fits in it and fills at least a third of it, so
+/// the axis does not jitter as values wander; a range narrower than a millionth of the values'
+/// magnitude is widened, so rounding noise in a conserved quantity draws as a flat line.
+AxisScale followValues(const ValueRange& data, const std::optional<AxisScale>& current, int ticks);
+
+/// A time axis (s) from `start` that reaches at least `end` in whole ticks: as a run grows,
+/// the axis grows in steps instead of rescaling on every refresh.
+AxisScale growingTimeScale(double start, double end);
+
+/// A time axis (s) `window` wide that ends at `end`, or starts at `start` until the run is
+/// that long; ticks stay at round times while it scrolls.
+AxisScale scrollingTimeScale(double start, double end, double window);
+
+/// printf-style label format for the ticks of `scale`: enough digits to tell neighbouring ticks
+/// apart and no more; scientific notation for very large or small magnitudes.
+std::string tickLabelFormat(const AxisScale& scale);
+
+}  // namespace fooball::gui

@@ -1,0 +1,316 @@
+#include "chart_panel.h"
+
+#include <QAction>
+#include <QChart>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QImage>
+#include <QPalette>
+#include <QSignalBlocker>
+#include <QSplitter>
+#include <QTimer>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <span>
+
+#include "chart_csv.h"
+#include "chart_style.h"
+#include "time_chart.h"
+
+namespace fooball::gui {
+namespace {
+
+/// ms between redraws while samples come in: 10 per second looks live, and a redraw of all
+/// curves costs a few ms of the GUI thread the simulation also runs on.
+constexpr int kRefreshIntervalMs = 100;
+constexpr double kDefaultWindowSeconds = 20.0;
+/// An exported PNG has twice the on-screen pixels, sharp enough for a page or a README.
+constexpr qreal kExportPixelRatio = 2.0;
+
+}  // namespace
+
+ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
+  const std::deque<ChartMarker>* markers = &data_.markers();
+  charts_[kMomentumChart] = new TimeChart(
+      tr("Momentum"), {Quantity::MomentumX, Quantity::MomentumY, Quantity::MomentumMagnitude},
+      markers);
+  charts_[kMomentumChart]->setValueAxisTitle(tr("momentum (N·s)"));
+  charts_[kEnergyChart] = new TimeChart(
+      tr("Energy"), {Quantity::KineticEnergy, Quantity::PotentialEnergy, Quantity::TotalEnergy},
+      markers);
+  charts_[kEnergyChart]->setValueAxisTitle(tr("energy (J)"));
+  charts_[kResidualChart] =
+      new TimeChart(tr("Energy budget residual: the method's own error"),
+                    {Quantity::EnergyResidual, Quantity::RelativeEnergyResidual}, markers);
+
+  auto* splitter = new QSplitter(Qt::Vertical, this);
+  splitter->setChildrenCollapsible(false);
+  splitter->setHandleWidth(3);
+  // The handles show the splitter's background: the charts' own, whatever the window's palette.
+  QPalette chartPalette = splitter->palette();
+  chartPalette.setColor(QPalette::Window, chart_colours::kBackground);
+  splitter->setPalette(chartPalette);
+  splitter->setAutoFillBackground(true);
+  for (TimeChart* chart : charts_) {
+    splitter->addWidget(chart);
+    connect(chart->chart(), &QChart::plotAreaChanged, this, &ChartPanel::alignPlotAreas);
+  }
+  chartArea_ = splitter;
+
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(0);
+  layout->addWidget(createToolBar());
+  layout->addWidget(splitter, 1);
+
+  refreshTimer_ = new QTimer(this);
+  refreshTimer_->setInterval(kRefreshIntervalMs);
+  connect(refreshTimer_, &QTimer::timeout, this, [this] {
+    if (viewOutOfDate_ && isVisible()) refresh();
+  });
+  refreshTimer_->start();
+
+  reset({});
+}
+
+ChartPanel::~ChartPanel() {
+  // The charts' marker overlays read data_, which members outlive but child widgets do not.
+  delete chartArea_;
+}
+
+QToolBar* ChartPanel::createToolBar() {
+  auto* toolBar = new QToolBar(this);
+  toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+
+  wholeRunToggle_ = toolBar->addAction(tr("Whole run"));
+  wholeRunToggle_->setObjectName(QStringLiteral("wholeRunToggle"));
+  wholeRunToggle_->setCheckable(true);
+  wholeRunToggle_->setToolTip(
+      tr("Show the whole run (older parts at reduced resolution) instead of a scrolling window"));
+  connect(wholeRunToggle_, &QAction::toggled, this, &ChartPanel::setShowWholeRun);
+
+  windowSpin_ = new QDoubleSpinBox(toolBar);
+  windowSpin_->setObjectName(QStringLiteral("windowSeconds"));
+  windowSpin_->setRange(1.0, 3600.0);
+  windowSpin_->setDecimals(0);
+  windowSpin_->setSuffix(tr(" s"));
+  windowSpin_->setValue(kDefaultWindowSeconds);
+  windowSpin_->setKeyboardTracking(false);
+  windowSpin_->setToolTip(tr("Length of the scrolling window, in seconds of simulated time"));
+  connect(windowSpin_, &QDoubleSpinBox::valueChanged, this, &ChartPanel::setWindowSeconds);
+  toolBar->addWidget(windowSpin_);
+
+  toolBar->addSeparator();
+  momentumXToggle_ = addQuantityToggle(toolBar, tr("px"), tr("Momentum, x component: Σ m vx (N·s)"),
+                                       QStringLiteral("momentumXToggle"));
+  momentumYToggle_ = addQuantityToggle(toolBar, tr("py"), tr("Momentum, y component: Σ m vy (N·s)"),
+                                       QStringLiteral("momentumYToggle"));
+  momentumMagnitudeToggle_ =
+      addQuantityToggle(toolBar, tr("|p|"), tr("Magnitude of the total momentum |Σ m v| (N·s)"),
+                        QStringLiteral("momentumMagnitudeToggle"));
+  toolBar->addSeparator();
+  kineticToggle_ = addQuantityToggle(toolBar, tr("kinetic"), tr("Kinetic energy Σ ½ m|v|² (J)"),
+                                     QStringLiteral("kineticToggle"));
+  potentialToggle_ = addQuantityToggle(
+      toolBar, tr("potential"), tr("Potential energy Σ −m (g·p), zero at the floor y = 0 (J)"),
+      QStringLiteral("potentialToggle"));
+  totalToggle_ =
+      addQuantityToggle(toolBar, tr("total"), tr("Total energy: kinetic + potential (J)"),
+                        QStringLiteral("totalToggle"));
+  toolBar->addSeparator();
+  residualToggle_ = addQuantityToggle(
+      toolBar, tr("residual"),
+      tr("Energy budget residual: E(t) − E(0) − work by tools and edits + energy taken by drag. "
+         "What is left is the method's own error (J)"),
+      QStringLiteral("residualToggle"));
+  relativeResidualToggle_ = addQuantityToggle(
+      toolBar, tr("÷|E₀|"),
+      tr("Show the residual relative to |E₀|, the run's total energy at its first sample"),
+      QStringLiteral("relativeResidualToggle"));
+  relativeResidualToggle_->setChecked(false);
+  return toolBar;
+}
+
+QAction* ChartPanel::addQuantityToggle(QToolBar* toolBar, const QString& text,
+                                       const QString& toolTip, const QString& objectName) {
+  QAction* toggle = toolBar->addAction(text);
+  toggle->setObjectName(objectName);
+  toggle->setToolTip(toolTip);
+  toggle->setCheckable(true);
+  toggle->setChecked(true);
+  connect(toggle, &QAction::toggled, this, &ChartPanel::applyToggles);
+  return toggle;
+}
+
+void ChartPanel::reset(const QStringList& runs) {
+  data_.reset(runs);
+  for (TimeChart* chart : charts_)
+    chart->setRuns(data_.runNames());
+  applyToggles();
+}
+
+void ChartPanel::addSample(int runIndex, const fooball::Metrics& metrics) {
+  data_.addSample(runIndex, metrics);
+  viewOutOfDate_ = true;
+}
+
+void ChartPanel::addMarker(double time, const QString& label) {
+  data_.addMarker(time, label);
+  viewOutOfDate_ = true;
+}
+
+void ChartPanel::setWindowSeconds(double seconds) {
+  if (!std::isfinite(seconds)) return;
+  {
+    const QSignalBlocker blocker(windowSpin_);
+    windowSpin_->setValue(seconds);  // clamped to the spin box's range
+  }
+  viewOutOfDate_ = true;
+  refresh();
+}
+
+void ChartPanel::setShowWholeRun(bool whole) {
+  {
+    const QSignalBlocker blocker(wholeRunToggle_);
+    wholeRunToggle_->setChecked(whole);
+  }
+  windowSpin_->setEnabled(!whole);
+  for (TimeChart* chart : charts_)
+    chart->forgetValueScale();
+  viewOutOfDate_ = true;
+  refresh();
+}
+
+void ChartPanel::applyToggles() {
+  const bool residualShown = residualToggle_->isChecked();
+  const bool relative = relativeResidualToggle_->isChecked();
+  relativeResidualToggle_->setEnabled(residualShown);
+
+  TimeChart* momentum = charts_[kMomentumChart];
+  momentum->setQuantityShown(Quantity::MomentumX, momentumXToggle_->isChecked());
+  momentum->setQuantityShown(Quantity::MomentumY, momentumYToggle_->isChecked());
+  momentum->setQuantityShown(Quantity::MomentumMagnitude, momentumMagnitudeToggle_->isChecked());
+  TimeChart* energy = charts_[kEnergyChart];
+  energy->setQuantityShown(Quantity::KineticEnergy, kineticToggle_->isChecked());
+  energy->setQuantityShown(Quantity::PotentialEnergy, potentialToggle_->isChecked());
+  energy->setQuantityShown(Quantity::TotalEnergy, totalToggle_->isChecked());
+  TimeChart* residual = charts_[kResidualChart];
+  residual->setQuantityShown(Quantity::EnergyResidual, residualShown && !relative);
+  residual->setQuantityShown(Quantity::RelativeEnergyResidual, residualShown && relative);
+  residual->setValueAxisTitle(relative ? tr("residual / |E₀|") : tr("residual (J)"));
+
+  // A chart with nothing to show steps aside; the top chart carries the marker labels and the
+  // bottom one the time axis title.
+  TimeChart* top = nullptr;
+  TimeChart* bottom = nullptr;
+  for (TimeChart* chart : charts_) {
+    const bool shown = chart->showsAnyQuantity();
+    chart->setVisible(shown);
+    if (!shown) continue;
+    if (top == nullptr) top = chart;
+    bottom = chart;
+  }
+  for (TimeChart* chart : charts_) {
+    chart->setMarkerLabelsShown(chart == top);
+    chart->setTimeAxisTitleShown(chart == bottom);
+  }
+  viewOutOfDate_ = true;
+  refresh();
+}
+
+void ChartPanel::alignPlotAreas() {
+  // Every shown chart's plot starts where the widest value labels need it to.
+  std::optional<double> alignedLeft;
+  for (const TimeChart* chart : charts_) {
+    const std::optional<double> natural = chart->naturalPlotLeft();
+    if (!chart->showsAnyQuantity() || !natural) continue;
+    alignedLeft = std::max(alignedLeft.value_or(*natural), *natural);
+  }
+  if (!alignedLeft) return;
+  for (TimeChart* chart : charts_) {
+    const std::optional<double> natural = chart->naturalPlotLeft();
+    if (!chart->showsAnyQuantity() || !natural) continue;
+    const double extra = *alignedLeft - *natural;
+    // Half a pixel of tolerance, so rounding cannot start a relayout loop.
+    if (std::abs(extra - chart->extraLeftMargin()) >= 0.5) chart->setExtraLeftMargin(extra);
+  }
+}
+
+void ChartPanel::refresh() {
+  redraw();
+}
+
+void ChartPanel::redraw() const {
+  const double windowSeconds = windowSpin_->value();
+  AxisScale timeScale;
+  if (!data_.hasSamples()) {
+    timeScale = scrollingTimeScale(0.0, 0.0, windowSeconds);
+  } else if (wholeRunToggle_->isChecked()) {
+    timeScale = growingTimeScale(data_.startTime(), data_.endTime());
+  } else {
+    timeScale = scrollingTimeScale(data_.startTime(), data_.endTime(), windowSeconds);
+  }
+
+  std::array<const SampleHistory*, ChartData::kMaxRuns> histories{};
+  for (int run = 0; run < data_.runCount(); ++run)
+    histories[run] = &data_.history(run);
+  const std::span<const SampleHistory* const> shownHistories(histories.data(), data_.runCount());
+  for (TimeChart* chart : charts_) {
+    if (chart->showsAnyQuantity()) chart->redraw(shownHistories, timeScale);
+  }
+  viewOutOfDate_ = false;
+}
+
+bool ChartPanel::exportPng(const QString& path) const {
+  if (viewOutOfDate_) redraw();
+  if (!isVisible()) {
+    // A hidden widget gets its pending resize events only when rendered: render one pixel, so
+    // the splitter places the charts at the panel's size and they size their scenes.
+    chartArea_->grab(QRect(0, 0, 1, 1));
+  }
+  // Each chart lays itself out in posted events, and lining the plot areas up takes another
+  // round; both are still pending in a hidden or just-redrawn panel.
+  for (int round = 0; round < 3; ++round) {
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+  }
+
+  QImage image(chartArea_->size() * kExportPixelRatio, QImage::Format_ARGB32_Premultiplied);
+  image.setDevicePixelRatio(kExportPixelRatio);
+  image.fill(chart_colours::kBackground);
+  chartArea_->render(&image);
+  return image.save(path, "PNG");
+}
+
+bool ChartPanel::exportCsv(const QString& path) const {
+  return writeChartCsv(path, data_);
+}
+
+int ChartPanel::displayedPointCount(int chart, int runIndex) const {
+  if (chart < 0 || chart >= kChartCount) return 0;
+  return charts_[chart]->pointCount(runIndex);
+}
+
+std::size_t ChartPanel::storedSampleCount(int runIndex) const {
+  if (runIndex < 0 || runIndex >= data_.runCount()) return 0;
+  return data_.history(runIndex).storedCount();
+}
+
+int ChartPanel::markerCount() const {
+  return static_cast<int>(data_.markers().size());
+}
+
+int ChartPanel::displayedMarkerCount() const {
+  for (const TimeChart* chart : charts_) {
+    if (chart->showsAnyQuantity()) return chart->visibleMarkerCount();
+  }
+  return 0;
+}
+
+QColor ChartPanel::runColour(int runIndex) {
+  return gui::runColour(runIndex);
+}
+
+}  // namespace fooball::gui

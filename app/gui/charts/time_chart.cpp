@@ -1,0 +1,280 @@
+#include "time_chart.h"
+
+#include <QChart>
+#include <QGraphicsLayout>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QValueAxis>
+#include <algorithm>
+#include <cmath>
+
+#include "chart_style.h"
+#include "marker_overlay.h"
+#include "series_points.h"
+
+namespace fooball::gui {
+namespace {
+
+/// px around the plot: room for the last time label on the right.
+const QMargins kChartMargins(4, 2, 12, 2);
+/// px of plot height per value tick interval, and the most intervals: labels never crowd.
+constexpr double kPixelsPerValueTick = 32.0;
+constexpr int kMaxValueTicks = 6;
+
+QFont sizedFont(const QFont& base, double pointSize, bool bold = false) {
+  QFont font = base;
+  font.setPointSizeF(pointSize);
+  font.setBold(bold);
+  return font;
+}
+
+void styleAxis(QValueAxis* axis, const QFont& baseFont) {
+  axis->setTickType(QValueAxis::TicksDynamic);
+  axis->setTickAnchor(0.0);
+  axis->setLabelsFont(sizedFont(baseFont, 8.0));
+  axis->setLabelsBrush(chart_colours::kLabel);
+  axis->setTitleFont(sizedFont(baseFont, 8.0));
+  axis->setTitleBrush(chart_colours::kLabel);
+  // One-pixel pens: Qt draws those directly instead of stroking an outline each frame.
+  axis->setGridLinePen(QPen(chart_colours::kGrid, 1.0));
+  axis->setLinePen(QPen(chart_colours::kAxisLine, 1.0));
+  axis->setMinorGridLineVisible(false);
+  axis->setShadesVisible(false);
+}
+
+void applyScale(QValueAxis* axis, const AxisScale& scale) {
+  // Every change relays the ticks out: in between, the new range must not meet the old, finer
+  // interval (a range 10⁵ times wider would create 10⁵ tick items). Widen the interval before
+  // the range, narrow it after.
+  if (scale.tickInterval >= axis->tickInterval()) {
+    axis->setTickInterval(scale.tickInterval);
+    axis->setRange(scale.min, scale.max);
+  } else {
+    axis->setRange(scale.min, scale.max);
+    axis->setTickInterval(scale.tickInterval);
+  }
+  axis->setLabelFormat(QString::fromStdString(tickLabelFormat(scale)));
+}
+
+}  // namespace
+
+TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
+                     const std::deque<ChartMarker>* markers, QWidget* parent)
+    : QChartView(parent),
+      chart_(new QChart),
+      timeAxis_(new QValueAxis(chart_)),
+      valueAxis_(new QValueAxis(chart_)),
+      quantities_(std::move(quantities)) {
+  // The theme first: it restyles everything already in the chart.
+  chart_->setTheme(QChart::ChartThemeDark);
+  chart_->setAnimationOptions(QChart::NoAnimation);
+  chart_->setBackgroundBrush(chart_colours::kBackground);
+  chart_->setBackgroundRoundness(0.0);
+  chart_->setPlotAreaBackgroundBrush(chart_colours::kPlotArea);
+  chart_->setPlotAreaBackgroundVisible(true);
+  chart_->layout()->setContentsMargins(0, 0, 0, 0);
+  chart_->setMargins(kChartMargins);
+  chart_->setTitle(title);
+  chart_->setTitleFont(sizedFont(font(), 9.0, true));
+  chart_->setTitleBrush(chart_colours::kTitle);
+
+  QLegend* legend = chart_->legend();
+  legend->setAlignment(Qt::AlignTop);
+  legend->setFont(sizedFont(font(), 8.0));
+  legend->setLabelColor(chart_colours::kLabel);
+  legend->setMarkerShape(QLegend::MarkerShapeFromSeries);
+
+  chart_->addAxis(timeAxis_, Qt::AlignBottom);
+  chart_->addAxis(valueAxis_, Qt::AlignLeft);
+  styleAxis(timeAxis_, font());
+  styleAxis(valueAxis_, font());
+  timeAxis_->setTitleText(tr("time (s)"));
+
+  setChart(chart_);
+  setRenderHint(QPainter::Antialiasing);
+  setFrameShape(QFrame::NoFrame);
+  setMinimumHeight(150);
+
+  markerOverlay_ = new MarkerOverlay(chart_, timeAxis_, markers);
+  connect(chart_, &QChart::plotAreaChanged, this, [this](const QRectF& plotArea) {
+    // The margins now are the ones this layout used; setExtraLeftMargin() may have changed
+    // extraLeftMargin_ since, for a layout still to come.
+    naturalPlotLeft_ = plotArea.left() - (chart_->margins().left() - kChartMargins.left());
+    markerOverlay_->plotAreaChanged();
+    // Qt elides tick labels that have no room: a plot that shrank gets fewer ticks.
+    if (valueTicksFor(plotArea) != valueTicks_) fitValueAxis();
+  });
+}
+
+void TimeChart::setRuns(const QStringList& runNames) {
+  removeAllSeries();
+  valueScale_.reset();
+  const int runCount = static_cast<int>(runNames.size());
+  for (int run = 0; run < runCount; ++run) {
+    for (const Quantity quantity : quantities_) {
+      const QString name = runCount > 1
+                               ? runNames[run] + QStringLiteral(" · ") + quantityName(quantity)
+                               : quantityName(quantity);
+      Curve curve{quantity, run, addSeries(name, curvePen(quantity, run, runCount)), {}};
+      curve.points.reserve(kMaxPointsPerCurve);
+      curves_.push_back(std::move(curve));
+    }
+  }
+  if (runCount > 1) {
+    for (int run = 0; run < runCount; ++run) {
+      legendKeys_.push_back({addSeries(runNames[run], QPen(runColour(run), 3.0)), std::nullopt});
+    }
+    for (const Quantity quantity : quantities_) {
+      QPen stylePen = curvePen(quantity, 0, runCount);
+      stylePen.setColor(chart_colours::kLabel);
+      legendKeys_.push_back({addSeries(quantityName(quantity), stylePen), quantity});
+    }
+  }
+  applyShownQuantities();
+}
+
+QLineSeries* TimeChart::addSeries(const QString& name, const QPen& pen) {
+  auto* series = new QLineSeries(chart_);
+  series->setName(name);
+  chart_->addSeries(series);
+  series->attachAxis(timeAxis_);
+  series->attachAxis(valueAxis_);
+  series->setPen(pen);  // after addSeries, which applies the theme's colours
+  return series;
+}
+
+void TimeChart::removeAllSeries() {
+  for (const Curve& curve : curves_) {
+    chart_->removeSeries(curve.series);
+    delete curve.series;
+  }
+  curves_.clear();
+  for (const LegendKey& key : legendKeys_) {
+    chart_->removeSeries(key.series);
+    delete key.series;
+  }
+  legendKeys_.clear();
+}
+
+bool TimeChart::isShown(Quantity quantity) const {
+  return std::find(hiddenQuantities_.begin(), hiddenQuantities_.end(), quantity) ==
+         hiddenQuantities_.end();
+}
+
+void TimeChart::setQuantityShown(Quantity quantity, bool shown) {
+  if (isShown(quantity) == shown) return;
+  std::erase(hiddenQuantities_, quantity);
+  if (!shown) hiddenQuantities_.push_back(quantity);
+  valueScale_.reset();
+  applyShownQuantities();
+}
+
+void TimeChart::applyShownQuantities() {
+  QLegend* legend = chart_->legend();
+  const auto setLegendEntryShown = [legend](QLineSeries* series, bool shown) {
+    for (QLegendMarker* marker : legend->markers(series))
+      marker->setVisible(shown);
+  };
+  // A series' visibility resets its legend entry, so the entry is set after it.
+  for (Curve& curve : curves_) {
+    const bool shown = isShown(curve.quantity);
+    curve.series->setVisible(shown);
+    setLegendEntryShown(curve.series, shown && legendKeys_.empty());
+    if (!shown) {
+      curve.points.clear();
+      curve.series->clear();
+    }
+  }
+  for (const LegendKey& key : legendKeys_) {
+    setLegendEntryShown(key.series, key.quantity ? isShown(*key.quantity) : showsAnyQuantity());
+  }
+}
+
+bool TimeChart::showsAnyQuantity() const {
+  return std::any_of(quantities_.begin(), quantities_.end(),
+                     [this](Quantity quantity) { return isShown(quantity); });
+}
+
+void TimeChart::setValueAxisTitle(const QString& title) {
+  valueAxis_->setTitleText(title);
+}
+
+void TimeChart::setTimeAxisTitleShown(bool shown) {
+  timeAxis_->setTitleVisible(shown);
+}
+
+void TimeChart::setMarkerLabelsShown(bool shown) {
+  markerOverlay_->setLabelsShown(shown);
+}
+
+void TimeChart::forgetValueScale() {
+  valueScale_.reset();
+}
+
+void TimeChart::redraw(std::span<const SampleHistory* const> histories,
+                       const AxisScale& timeScale) {
+  const int maxPoints = maxPointsPerCurve();
+  ValueRange shownValues;
+  for (Curve& curve : curves_) {
+    if (!isShown(curve.quantity)) continue;
+    if (static_cast<std::size_t>(curve.runIndex) < histories.size()) {
+      shownValues.include(fillSeriesPoints(*histories[curve.runIndex], curve.quantity,
+                                           timeScale.min, timeScale.max, maxPoints, curve.points));
+    } else {
+      curve.points.clear();
+    }
+    // Qt rebuilds a curve's geometry (and strokes its outline) on every change of its points
+    // or of an axis: empty while the axes change, each curve is built once, by replace().
+    curve.series->clear();
+  }
+  applyScale(timeAxis_, timeScale);
+  shownValues_ = shownValues;
+  fitValueAxis();
+  for (Curve& curve : curves_) {
+    if (isShown(curve.quantity)) curve.series->replace(curve.points);
+  }
+  markerOverlay_->update();
+}
+
+int TimeChart::maxPointsPerCurve() const {
+  // A lowest and a highest point per pixel column is all a line can show; until the first
+  // layout the width is unknown.
+  const QRectF plot = chart_->plotArea();
+  if (plot.isEmpty()) return kMaxPointsPerCurve;
+  return std::clamp(2 * static_cast<int>(plot.width()), kMinPointsPerCurve, kMaxPointsPerCurve);
+}
+
+int TimeChart::valueTicksFor(const QRectF& plotArea) {
+  return std::clamp(static_cast<int>(plotArea.height() / kPixelsPerValueTick), 2, kMaxValueTicks);
+}
+
+void TimeChart::fitValueAxis() {
+  const int ticks = valueTicksFor(chart_->plotArea());
+  if (ticks != valueTicks_) valueScale_.reset();
+  valueTicks_ = ticks;
+  valueScale_ = followValues(shownValues_, valueScale_, ticks);
+  applyScale(valueAxis_, *valueScale_);
+}
+
+int TimeChart::pointCount(int runIndex) const {
+  int count = 0;
+  for (const Curve& curve : curves_) {
+    if (curve.runIndex == runIndex && isShown(curve.quantity)) {
+      count = std::max(count, curve.series->count());
+    }
+  }
+  return count;
+}
+
+int TimeChart::visibleMarkerCount() const {
+  return markerOverlay_->visibleCount();
+}
+
+void TimeChart::setExtraLeftMargin(double pixels) {
+  extraLeftMargin_ = pixels;
+  QMargins margins = kChartMargins;
+  margins.setLeft(kChartMargins.left() + static_cast<int>(std::lround(pixels)));
+  chart_->setMargins(margins);
+}
+
+}  // namespace fooball::gui

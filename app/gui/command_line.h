@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "fooball/vec2.h"
+
+namespace fooball::gui {
+
+/// `fooball [--scene FILE | --preset NAME] [--backend NAME] [--compare NAME] [--balls N]
+///          [--show ITEM,…] [--attractor X,Y]… [--frames N] [--screenshot FILE.png]`
+/// (DESIGN.md, "fooball (GUI)"; --balls, --show and --attractor are extras for benchmarks and
+/// reproducible screenshots).
+struct CommandLine {
+  std::optional<QString> sceneFile;
+  std::optional<QString> preset;
+  std::optional<QString> backend;
+  std::optional<QString> compare;
+  std::optional<std::size_t> balls;  ///< ball count after loading, like the spinner
+  std::optional<int> frames;         ///< run this many frames, print the mean frame time, exit
+  std::optional<QString> screenshot;
+  /// Drawing options to turn on: "temperature", "vectors", "centre-of-mass", "side-by-side".
+  QStringList show;
+  std::vector<Vec2> attractors;  ///< m, permanent attractors placed at the start
+  bool help = false;
+
+  /// Runs without a window system of its own: --frames or --screenshot.
+  bool headless() const { return frames.has_value() || screenshot.has_value(); }
+};
+
+/// A bad argument; what() is one line naming it.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// `arguments` includes the program name first, as QCoreApplication::arguments() does.
+/// Throws UsageError.
+CommandLine parseCommandLine(const QStringList& arguments);
+
+QString usageText();
+
+}  // namespace fooball::gui

@@ -1,0 +1,132 @@
+// fooball: the Qt desktop app (DESIGN.md, "fooball (GUI)").
+
+#include <QApplication>
+#include <QFileInfo>
+#include <QSettings>
+#include <exception>
+#include <iostream>
+
+#include "command_line.h"
+#include "fooball/presets.h"
+#include "fooball/scene_error.h"
+#include "fooball/scene_file.h"
+#include "headless_run.h"
+#include "main_window.h"
+#include "registry.h"
+
+namespace {
+
+using namespace fooball;
+using namespace fooball::gui;
+
+constexpr const char* kNoDisplay =
+    "fooball: no display found (DISPLAY/WAYLAND_DISPLAY unset). Run the headless simulator "
+    "instead: fooball-cli run --preset default\n";
+
+/// A window system to connect to, or the user has chosen a Qt platform themselves.
+bool displayAvailable() {
+  return !qEnvironmentVariableIsEmpty("DISPLAY") ||
+         !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
+         qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
+}
+
+bool isRegisteredBackend(const QString& name) {
+  for (const BackendInfo& info : registeredBackends()) {
+    if (name == QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size()))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The command line first, then (for interactive runs) what the user chose last time.
+/// Throws SceneError for a bad scene file or an unknown preset named on the command line.
+StartupOptions startupOptions(const CommandLine& line, bool remember) {
+  StartupOptions options;
+  options.rememberSettings = remember;
+  QSettings settings;
+  if (line.sceneFile) {
+    options.scene = loadSceneFile(QFile::encodeName(*line.sceneFile).toStdString());
+    options.sourceName = QFileInfo(*line.sceneFile).fileName();
+  } else {
+    QString name =
+        line.preset.value_or(QString::fromUtf8(kDefaultPreset.data(), kDefaultPreset.size()));
+    if (!line.preset && remember) name = settings.value("scene/preset", name).toString();
+    try {
+      options.scene = loadPreset(name.toStdString());
+    } catch (const SceneError&) {
+      if (line.preset) throw;
+      name = QString::fromUtf8(kDefaultPreset.data(), kDefaultPreset.size());
+      options.scene = loadPreset(kDefaultPreset);
+    }
+    options.presetName = name;
+    options.sourceName = name;
+  }
+  options.backend =
+      QString::fromUtf8(registeredBackends().front().name.data(),
+                        static_cast<qsizetype>(registeredBackends().front().name.size()));
+  if (line.backend) {
+    options.backend = *line.backend;
+  } else if (remember) {
+    const QString remembered = settings.value("run/backend").toString();
+    if (isRegisteredBackend(remembered)) options.backend = remembered;
+  }
+  options.compare = line.compare.value_or(QString());
+  options.balls = line.balls;
+  options.show = line.show;
+  options.attractors = line.attractors;
+  return options;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  QStringList arguments;
+  for (int i = 0; i < argc; ++i)
+    arguments << QString::fromLocal8Bit(argv[i]);
+  CommandLine line;
+  try {
+    line = parseCommandLine(arguments);
+  } catch (const UsageError& error) {
+    std::cerr << "fooball: error: " << error.what() << '\n';
+    return 2;
+  }
+  if (line.help) {
+    std::cout << usageText().toStdString();
+    return 0;
+  }
+  if (!displayAvailable()) {
+    if (!line.headless()) {
+      std::cerr << kNoDisplay;
+      return 2;
+    }
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+  }
+
+  QApplication::setOrganizationName(QStringLiteral("FooBall"));
+  QApplication::setApplicationName(QStringLiteral("fooball"));
+  // The scene first: a bad file or preset is one line on stderr, before Qt says anything.
+  StartupOptions options;
+  try {
+    options = startupOptions(line, !line.headless());
+  } catch (const SceneError& error) {
+    std::cerr << "fooball: error: " << error.what() << '\n';
+    return 2;
+  }
+
+  QApplication app(argc, argv);
+  QApplication::setApplicationDisplayName(QStringLiteral("FooBall"));
+  try {
+    MainWindow window(options);
+    if (line.headless()) return runHeadless(window, line.frames.value_or(1), line.screenshot);
+    window.show();
+    window.startLiveUpdates();
+    return QApplication::exec();
+  } catch (const SceneError& error) {
+    std::cerr << "fooball: error: " << error.what() << '\n';
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "fooball: error: " << error.what() << '\n';
+    return 1;
+  }
+}

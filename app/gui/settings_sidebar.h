@@ -1,0 +1,128 @@
+#pragma once
+
+#include <QWidget>
+#include <cstddef>
+#include <optional>
+
+#include "fooball/interactions.h"
+#include "fooball/scene.h"
+#include "simulation_view.h"
+
+class QButtonGroup;
+class QCheckBox;
+class QComboBox;
+class QGroupBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+namespace fooball::gui {
+
+class BackendOptionsForm;
+class BallInspector;
+class LogSlider;
+
+/// Every setting of the sandbox, each live and showing its value and unit: the scene and its
+/// ball count, the backends (and compare mode), forces and time, collisions, the mouse tool,
+/// drawing, and the inspector of the selected ball. It only reports what the user chose; the
+/// main window applies it and syncs the sidebar back with the show* slots.
+class SettingsSidebar : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit SettingsSidebar(QWidget* parent = nullptr);
+
+  /// Spinner limit: well past the 100,000 balls the renderer is built for.
+  static constexpr int kMaxBallCount = 1'000'000;
+
+  BackendOptionsForm* optionsForm(int runIndex) const;
+  BallInspector* inspector() const { return inspector_; }
+  LogSlider* gravitySlider() const { return gravity_; }
+  LogSlider* airResistanceSlider() const { return airResistance_; }
+  LogSlider* strengthSlider() const { return strength_; }
+  LogSlider* timeScaleSlider() const { return timeScale_; }
+  QSpinBox* ballCountBox() const { return ballCount_; }
+  QComboBox* backendBox() const { return backend_; }
+  QComboBox* compareBox() const { return compare_; }
+
+ public slots:
+  /// `presetName` empty: the scene came from a file called `sourceName`.
+  void showSceneSource(const QString& presetName, const QString& sourceName);
+  void showBallCount(std::size_t count);
+  void showWorld(const WorldSettings& world);
+  void showStrength(double strength);
+  void showTimeScale(double timeScale);
+  void showMouseMode(MouseMode mode);
+  void showScope(Scope scope);
+  /// `compare` empty: compare mode is off.
+  void showBackends(const QString& main, const QString& compare);
+  void showAttractorCount(std::size_t count);
+  void showDrawing(bool temperature, bool tethers, bool velocityVectors, bool centreOfMass);
+  void showCompareLayout(CompareLayout layout);
+  /// Shows the inspector for ball `index`, or hides it.
+  void showSelection(std::optional<std::size_t> index, const BallDef& ball);
+
+ signals:
+  void presetChosen(const QString& name);
+  void ballCountChosen(int count);
+  void restartRequested();
+  void resetSceneRequested();
+
+  void backendChosen(const QString& name);
+  /// Empty: compare mode off.
+  void compareChosen(const QString& name);
+  void backendOptionChanged(int runIndex, const QString& name, double value);
+
+  void gravityChosen(double magnitude);          ///< m/s², pointing the way gravity points now
+  void airResistanceChosen(double coefficient);  ///< 1/s
+  void strengthChosen(double strength);          ///< 1/s²
+  void timeScaleChosen(double timeScale);        ///< simulated seconds per real second
+  void resetSlidersRequested();
+  void ballCollisionsToggled(bool on);
+  void wallsToggled(bool on);
+
+  void mouseModeChosen(MouseMode mode);
+  void scopeChosen(Scope scope);
+  void clearAttractorsRequested();
+
+  void temperatureToggled(bool on);
+  void tethersToggled(bool on);
+  void velocityVectorsToggled(bool on);
+  void centreOfMassToggled(bool on);
+  void compareLayoutChosen(CompareLayout layout);
+
+ private:
+  QGroupBox* createSceneGroup();
+  QGroupBox* createBackendGroup();
+  QGroupBox* createForcesGroup();
+  QGroupBox* createCollisionsGroup();
+  QGroupBox* createMouseGroup();
+  QGroupBox* createDrawingGroup();
+
+  QComboBox* preset_;
+  QSpinBox* ballCount_;
+  QComboBox* backend_;
+  QComboBox* compare_;
+  BackendOptionsForm* mainOptions_;
+  BackendOptionsForm* compareOptions_;
+  QLabel* compareOptionsTitle_;
+  QButtonGroup* compareLayout_;
+  QWidget* compareLayoutRow_;
+  LogSlider* gravity_;
+  LogSlider* airResistance_;
+  LogSlider* strength_;
+  LogSlider* timeScale_;
+  QCheckBox* ballCollisions_;
+  QCheckBox* walls_;
+  QButtonGroup* mouseMode_;
+  QButtonGroup* scope_;
+  QPushButton* clearAttractors_;
+  QCheckBox* temperature_;
+  QCheckBox* tethers_;
+  QCheckBox* velocityVectors_;
+  QCheckBox* centreOfMass_;
+  QGroupBox* inspectorGroup_;
+  BallInspector* inspector_;
+};
+
+}  // namespace fooball::gui

@@ -1,0 +1,112 @@
+#pragma once
+
+#include <QImage>
+#include <QLineF>
+#include <QWidget>
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "disc_rasterizer.h"
+#include "fooball/vec2.h"
+#include "temperature_palette.h"
+#include "view_transform.h"
+
+namespace fooball {
+class Simulation;
+}
+
+namespace fooball::gui {
+
+class RunController;
+
+/// How compare mode shows its two runs.
+enum class CompareLayout {
+  Overlay,     ///< one box: the main run filled, the compare run as outlines on top
+  SideBySide,  ///< two boxes, each run filled in its own
+};
+
+/// The black box of balls, painted from the runs' current state, and the mouse tools on it.
+/// Balls are rasterised into an image (DiscRasterizer); tethers, vectors and labels are
+/// painted on top with QPainter.
+class SimulationView : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit SimulationView(const RunController& runs, QWidget* parent = nullptr);
+
+  QSize sizeHint() const override { return {960, 540}; }
+  QSize minimumSizeHint() const override { return {240, 160}; }
+
+  /// The mapping of the box that shows run `runIndex` (side by side: each run has its own).
+  ViewTransform transformForRun(int runIndex) const;
+
+  bool temperatureColouring() const { return temperature_; }
+  bool tethers() const { return tethers_; }
+  bool velocityVectors() const { return velocityVectors_; }
+  bool centreOfMass() const { return centreOfMass_; }
+  CompareLayout compareLayout() const { return compareLayout_; }
+
+ public slots:
+  void setTemperatureColouring(bool on);
+  void setTethers(bool on);
+  void setVelocityVectors(bool on);
+  void setCentreOfMass(bool on);
+  void setCompareLayout(CompareLayout layout);
+
+ signals:
+  /// Left button while running: the mouse tool (positions in m).
+  void toolPressed(Vec2 point);
+  void toolMoved(Vec2 point);
+  void toolReleased(Vec2 point);
+  /// Right button: a permanent attractor.
+  void attractorPlaced(Vec2 point);
+  /// Left click while paused: the ball under the cursor, or none.
+  void ballClicked(std::optional<std::size_t> index);
+  /// Where the cursor is over the box (m), for the status bar.
+  void cursorMoved(Vec2 point);
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+
+ private:
+  struct Panel {
+    int runIndex;  ///< the run drawn filled
+    bool overlay;  ///< the compare run is drawn as outlines on top
+    ViewTransform transform;
+  };
+  std::vector<Panel> panels() const;
+  const Panel* panelAt(QPointF position, const std::vector<Panel>& panels) const;
+  Vec2 toMetres(QPointF position) const;
+  std::optional<std::size_t> ballAt(QPointF position) const;
+  double temperatureTopSpeed();
+
+  void paintBalls(QPainter& painter, const Panel& panel, std::size_t panelIndex);
+  void paintBox(QPainter& painter, const Panel& panel) const;
+  void paintVelocityVectors(QPainter& painter, const Panel& panel, const Simulation& run);
+  void paintTethers(QPainter& painter, const Panel& panel, const Simulation& run);
+  void paintCentreOfMass(QPainter& painter, const Panel& panel) const;
+  void paintSelection(QPainter& painter, const Panel& panel) const;
+  void paintRunLabels(QPainter& painter, const Panel& panel) const;
+  void paintTemperatureLegend(QPainter& painter, const QRect& box) const;
+  void paintPausedBadge(QPainter& painter, const QRect& box) const;
+
+  const RunController& runs_;
+  bool temperature_ = false;
+  bool tethers_ = true;
+  bool velocityVectors_ = false;
+  bool centreOfMass_ = false;
+  CompareLayout compareLayout_ = CompareLayout::Overlay;
+  bool toolHeld_ = false;
+
+  TemperaturePalette palette_;
+  double topSpeed_ = 0.0;  ///< m/s at the hot end of the temperature scale, smoothed over frames
+  std::array<QImage, 2> ballImages_;
+  DiscRasterizer rasterizer_;
+  std::vector<QLineF> lines_;  ///< reused for tethers and vectors
+};
+
+}  // namespace fooball::gui

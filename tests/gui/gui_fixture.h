@@ -1,0 +1,68 @@
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <QPoint>
+#include <QStringList>
+#include <QtTest/QTest>
+#include <memory>
+
+#include "fooball/scene.h"
+#include "main_window.h"
+#include "run_controller.h"
+#include "simulation_view.h"
+#include "test_scenes.h"
+#include "view_transform.h"
+
+namespace fooball::gui::testing {
+
+inline constexpr double kFrame = 1.0 / 60.0;  // s, one frame of physics
+
+/// A main window on `scene` that neither reads nor writes the user's settings and records
+/// errors instead of showing message boxes.
+class GuiTest : public ::testing::Test {
+ protected:
+  void open(const Scene& scene, const QString& backend = QStringLiteral("elastic"),
+            const QString& compare = QString()) {
+    StartupOptions options;
+    options.scene = scene;
+    options.sourceName = QStringLiteral("test");
+    options.backend = backend;
+    options.compare = compare;
+    options.rememberSettings = false;
+    window = std::make_unique<MainWindow>(options);
+    window->setErrorReporter(
+        [this](const QString&, const QString& message) { errors.append(message); });
+    window->resize(1280, 800);
+    window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  }
+
+  RunController& runs() const { return window->runs(); }
+  const Simulation& mainRun() const { return runs().run(RunController::kMainRun); }
+  SimulationView* view() const { return window->view(); }
+
+  /// The view pixel showing `point` (m) in run `runIndex`'s box.
+  QPoint pixelOf(Vec2 point, int runIndex = 0) const {
+    return view()->transformForRun(runIndex).toPixels(point).toPoint();
+  }
+
+  void frames(int count) {
+    for (int i = 0; i < count; ++i)
+      window->advanceFrame(kFrame);
+  }
+
+  std::unique_ptr<MainWindow> window;
+  QStringList errors;
+};
+
+/// A few still balls, well apart, in a 16 × 9 m box without gravity.
+inline Scene stillBalls() {
+  Scene scene = fooball::testing::emptyBox();
+  scene.balls = {fooball::testing::ball({4.0, 4.5}, {0.0, 0.0}),
+                 fooball::testing::ball({12.0, 4.5}, {0.0, 0.0}),
+                 fooball::testing::ball({8.0, 7.5}, {0.0, 0.0})};
+  return scene;
+}
+
+}  // namespace fooball::gui::testing

@@ -1,0 +1,72 @@
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QTemporaryDir>
+
+namespace {
+
+struct Outcome {
+  int exitCode = -1;
+  QString out;
+  QString err;
+};
+
+/// Runs the built fooball binary with no display at all, as CI does.
+Outcome runFooball(const QStringList& arguments, bool setPlatform) {
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.remove(QStringLiteral("DISPLAY"));
+  environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+  environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
+  if (setPlatform)
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+  QProcess process;
+  process.setProcessEnvironment(environment);
+  process.start(QStringLiteral(FOOBALL_GUI_PATH), arguments);
+  EXPECT_TRUE(process.waitForFinished(60'000));
+  return {process.exitCode(), QString::fromLocal8Bit(process.readAllStandardOutput()),
+          QString::fromLocal8Bit(process.readAllStandardError())};
+}
+
+TEST(FooballBinary, ScreenshotWritesANonEmptyImageWithoutADisplay) {
+  QTemporaryDir directory;
+  const QString path = directory.filePath(QStringLiteral("shot.png"));
+  const Outcome outcome =
+      runFooball({QStringLiteral("--preset"), QStringLiteral("default"), QStringLiteral("--frames"),
+                  QStringLiteral("3"), QStringLiteral("--screenshot"), path},
+                 false);
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.err.toStdString();
+  EXPECT_TRUE(outcome.out.contains(QStringLiteral("mean frame time"))) << outcome.out.toStdString();
+  const QImage image(path);
+  ASSERT_FALSE(image.isNull());
+  EXPECT_GE(image.width(), 800);
+  EXPECT_GE(image.height(), 500);
+  // Not a blank image: the black box, the sidebar and the balls differ.
+  EXPECT_NE(image.pixel(image.width() / 4, image.height() / 3), image.pixel(image.width() - 5, 40));
+}
+
+TEST(FooballBinary, InteractiveRunWithoutADisplaySaysWhatToDoAndExits2) {
+  const Outcome outcome = runFooball({}, false);
+  EXPECT_EQ(outcome.exitCode, 2);
+  EXPECT_TRUE(outcome.err.startsWith(QStringLiteral("fooball: no display found")))
+      << outcome.err.toStdString();
+  EXPECT_TRUE(outcome.err.contains(QStringLiteral("fooball-cli run --preset default")));
+}
+
+TEST(FooballBinary, BadArgumentsGiveOneLineAndExit2) {
+  for (const QStringList& arguments :
+       {QStringList{QStringLiteral("--frames"), QStringLiteral("zero")},
+        QStringList{QStringLiteral("--backend"), QStringLiteral("nosuch")},
+        QStringList{QStringLiteral("--bogus")},
+        QStringList{QStringLiteral("--preset"), QStringLiteral("nosuch"),
+                    QStringLiteral("--frames"), QStringLiteral("1")}}) {
+    const Outcome outcome = runFooball(arguments, true);
+    EXPECT_EQ(outcome.exitCode, 2) << arguments.join(' ').toStdString();
+    EXPECT_EQ(outcome.err.count(QLatin1Char('\n')), 1) << outcome.err.toStdString();
+    EXPECT_TRUE(outcome.err.startsWith(QStringLiteral("fooball: error: ")))
+        << outcome.err.toStdString();
+  }
+}
+
+}  // namespace
