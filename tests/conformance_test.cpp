@@ -8,6 +8,7 @@
 #include <string>
 
 #include "allocation_counter.h"
+#include "backend_state.h"
 #include "fooball/metrics.h"
 #include "fooball/simulation.h"
 #include "registry.h"
@@ -48,16 +49,8 @@ class Conformance : public ::testing::TestWithParam<BackendInfo> {
   Tolerances tolerances() const { return tolerancesFor(GetParam().name); }
 };
 
-struct State {
-  std::vector<Vec2> positions;
-  std::vector<Vec2> velocities;
-};
-
-State read(const Backend& backend) {
-  State state{std::vector<Vec2>(backend.ballCount()), std::vector<Vec2>(backend.ballCount())};
-  backend.readState(state.positions, state.velocities);
-  return state;
-}
+using testing::readState;
+using testing::State;
 
 std::vector<double> massesOf(const Scene& scene) {
   std::vector<double> masses;
@@ -85,9 +78,10 @@ TEST_P(Conformance, MomentumIsConservedWithWallsOff) {
   auto backend = make();
   backend->load(scene);
   const Vec2 before =
-      sumState(read(*backend).positions, read(*backend).velocities, massesOf(scene), {}).momentum;
+      sumState(readState(*backend).positions, readState(*backend).velocities, massesOf(scene), {})
+          .momentum;
   run(*backend, 3.0);
-  const State after = read(*backend);
+  const State after = readState(*backend);
   const Vec2 momentum = sumState(after.positions, after.velocities, massesOf(scene), {}).momentum;
   EXPECT_GT(backend->counters().ballCollisions, 50u) << "the test needs collisions to mean much";
   EXPECT_LE(length(momentum - before), tolerances().momentum * momentumScale(scene));
@@ -98,10 +92,10 @@ TEST_P(Conformance, KineticEnergyIsConservedInAGasWithoutGravity) {
   auto backend = make();
   backend->load(scene);
   const double before =
-      sumState(read(*backend).positions, read(*backend).velocities, massesOf(scene), {})
+      sumState(readState(*backend).positions, readState(*backend).velocities, massesOf(scene), {})
           .kineticEnergy;
   run(*backend, 5.0);
-  const State after = read(*backend);
+  const State after = readState(*backend);
   const double energy =
       sumState(after.positions, after.velocities, massesOf(scene), {}).kineticEnergy;
   EXPECT_GT(backend->counters().ballCollisions, 100u);
@@ -118,7 +112,7 @@ TEST_P(Conformance, NobodyEscapesAClosedBoxUnderGravityAtHighSpeed) {
   backend->load(scene);
   for (int frame = 0; frame < 240; ++frame) {
     backend->step(1.0 / 60.0, {});
-    const State state = read(*backend);
+    const State state = readState(*backend);
     for (std::size_t i = 0; i < state.positions.size(); ++i) {
       const Vec2 p = state.positions[i];
       ASSERT_TRUE(isFinite(p) && isFinite(state.velocities[i])) << "ball " << i;
@@ -138,8 +132,8 @@ TEST_P(Conformance, SameSceneGivesTheSameTrajectory) {
   second->load(scene);
   run(*first, 2.0);
   run(*second, 2.0);
-  const State a = read(*first);
-  const State b = read(*second);
+  const State a = readState(*first);
+  const State b = readState(*second);
   for (std::size_t i = 0; i < a.positions.size(); ++i) {
     ASSERT_EQ(a.positions[i], b.positions[i]) << "ball " << i;
     ASSERT_EQ(a.velocities[i], b.velocities[i]) << "ball " << i;
@@ -169,7 +163,7 @@ TEST_P(Conformance, SaveThenLoadGivesBackTheSameState) {
     ASSERT_EQ(again.balls[i].radius, saved.balls[i].radius) << "ball " << i;
     ASSERT_EQ(again.balls[i].mass, saved.balls[i].mass) << "ball " << i;
   }
-  const State state = read(*original);
+  const State state = readState(*original);
   for (std::size_t i = 0; i < saved.balls.size(); ++i) {
     ASSERT_EQ(state.positions[i], saved.balls[i].position) << "readState and save agree";
   }
@@ -207,7 +201,7 @@ TEST_P(Conformance, HeadOnEqualMassesSwapVelocities) {
   auto backend = make();
   backend->load(scene);
   run(*backend, 2.0);  // a 5 m gap closing at 3 m/s: contact at t = 5/3 s, no wall before 2 s
-  const State state = read(*backend);
+  const State state = readState(*backend);
   EXPECT_NEAR(state.velocities[0].x, -1.0, 1.0 * tolerances().velocity * 100);
   EXPECT_NEAR(state.velocities[1].x, 2.0, 2.0 * tolerances().velocity * 100);
   EXPECT_EQ(backend->counters().ballCollisions, 1u);
@@ -221,7 +215,7 @@ TEST_P(Conformance, ForcesActAsAKickAtTheStartOfTheStep) {
   const double dt = 0.05;
   const Vec2 force{4.0, -2.0};  // N on a 2 kg ball: Δv = F·dt/m = (0.1, −0.05) m/s
   backend->step(dt, std::vector<Vec2>{force});
-  const State state = read(*backend);
+  const State state = readState(*backend);
   const Vec2 expectedVelocity{1.1, -0.05};
   EXPECT_NEAR(state.velocities[0].x, expectedVelocity.x, tolerances().velocity);
   EXPECT_NEAR(state.velocities[0].y, expectedVelocity.y, tolerances().velocity);
@@ -235,7 +229,7 @@ TEST_P(Conformance, AWallBounceIsCountedOnceWithItsImpulse) {
   auto backend = make();
   backend->load(scene);
   run(*backend, 1.0);  // reaches the right wall (x = 15.5) after 0.5 s
-  const State state = read(*backend);
+  const State state = readState(*backend);
   EXPECT_EQ(backend->counters().wallCollisions, 1u);
   EXPECT_NEAR(backend->counters().wallImpulse, 2.0 * 2.0 * 3.0, 12.0 * tolerances().velocity);
   EXPECT_NEAR(state.velocities[0].x, -3.0, 3.0 * tolerances().velocity);
@@ -248,7 +242,7 @@ TEST_P(Conformance, WallsThatAreOffLetBallsOut) {
   auto backend = make();
   backend->load(scene);
   run(*backend, 2.0);
-  EXPECT_NEAR(read(*backend).positions[0].x, 20.0, tolerances().position * 10);
+  EXPECT_NEAR(readState(*backend).positions[0].x, 20.0, tolerances().position * 10);
   EXPECT_EQ(backend->counters().wallCollisions, 0u);
 }
 
@@ -259,7 +253,7 @@ TEST_P(Conformance, BallsPassThroughEachOtherWhenCollisionsAreOff) {
   auto backend = make();
   backend->load(scene);
   run(*backend, 2.0);
-  const State state = read(*backend);
+  const State state = readState(*backend);
   EXPECT_NEAR(state.positions[0].x, 9.0, tolerances().position * 10);
   EXPECT_NEAR(state.positions[1].x, 7.0, tolerances().position * 10);
   EXPECT_EQ(backend->counters().ballCollisions, 0u);
@@ -271,11 +265,11 @@ TEST_P(Conformance, SetWorldChangesGravityLive) {
   auto backend = make();
   backend->load(scene);
   run(*backend, 0.5);
-  EXPECT_EQ(read(*backend).velocities[0].y, 0.0);
+  EXPECT_EQ(readState(*backend).velocities[0].y, 0.0);
   scene.world.gravity = {0.0, -2.0};
   backend->setWorld(scene.world);
   run(*backend, 0.5);
-  EXPECT_NEAR(read(*backend).velocities[0].y, -1.0, tolerances().velocity * 10);
+  EXPECT_NEAR(readState(*backend).velocities[0].y, -1.0, tolerances().velocity * 10);
 }
 
 TEST_P(Conformance, SetBallEditsOneBallAndKeepsTheOthers) {
@@ -283,12 +277,12 @@ TEST_P(Conformance, SetBallEditsOneBallAndKeepsTheOthers) {
   auto backend = make();
   backend->load(scene);
   run(*backend, 0.25);
-  const State before = read(*backend);
+  const State before = readState(*backend);
   BallDef edited = ball({8.0, 4.5}, {0.0, 0.0}, 0.05, 3.0);
   // Put it where nothing is: move it onto the spot of ball 7, which we then check moved.
   edited.position = before.positions[7];
   backend->setBall(7, edited);
-  const State after = read(*backend);
+  const State after = readState(*backend);
   EXPECT_EQ(after.velocities[7], Vec2{});
   EXPECT_EQ(after.positions[8], before.positions[8]);
   EXPECT_NEAR(backend->save().balls[7].mass, 3.0, 3.0 * tolerances().velocity);

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "backend_state.h"
 #include "exact/barrier_contact.h"
 #include "exact/free_flight.h"
 #include "exact/pair_contact.h"
@@ -36,16 +37,8 @@ Scene sceneOf(Box box, std::vector<BallDef> balls, Vec2 gravity = {}, double dra
   return scene;
 }
 
-struct State {
-  std::vector<Vec2> positions;
-  std::vector<Vec2> velocities;
-};
-
-State readState(const Backend& backend) {
-  State state{std::vector<Vec2>(backend.ballCount()), std::vector<Vec2>(backend.ballCount())};
-  backend.readState(state.positions, state.velocities);
-  return state;
-}
+using testing::readState;
+using testing::State;
 
 double diagnostic(const Backend& backend, std::string_view name) {
   for (const Diagnostic& reading : backend.diagnostics()) {
@@ -186,7 +179,7 @@ TEST(ExactPairContact, CurvedPathMeetsTheQuarticRoot) {
 
 // --- Collisions against closed forms --------------------------------------------------------
 
-class ExactHeadOn : public testing::TestWithParam<double> {};
+class ExactHeadOn : public ::testing::TestWithParam<double> {};
 
 TEST_P(ExactHeadOn, OutgoingVelocitiesFollowTheOneDimensionalElasticFormulas) {
   const double massRatio = GetParam();
@@ -224,7 +217,8 @@ TEST_P(ExactHeadOn, OutgoingVelocitiesFollowTheOneDimensionalElasticFormulas) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(MassRatios, ExactHeadOn, testing::Values(1.0, 3.0, 100.0, 1e4, 1e8, 1e-8));
+INSTANTIATE_TEST_SUITE_P(MassRatios, ExactHeadOn,
+                         ::testing::Values(1.0, 3.0, 100.0, 1e4, 1e8, 1e-8));
 
 TEST(ExactBackend, GlancingEqualMassCollisionLeavesPerpendicularVelocities) {
   auto backend = makeExactBackend();

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <vector>
+
+#include "fooball/backend.h"
+
+namespace fooball::testing {
+
+/// A backend's balls as readState reports them, in scene order.
+struct State {
+  std::vector<Vec2> positions;   ///< m
+  std::vector<Vec2> velocities;  ///< m/s
+};
+
+inline State readState(const Backend& backend) {
+  State state{std::vector<Vec2>(backend.ballCount()), std::vector<Vec2>(backend.ballCount())};
+  backend.readState(state.positions, state.velocities);
+  return state;
+}
+
+}  // namespace fooball::testing
