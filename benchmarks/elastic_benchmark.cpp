@@ -1,34 +1,73 @@
-// Step cost of the elastic backend against ball count in the standard gas (packing fraction
-// 0.2, one substep per 1/60 s step). Cost must grow linearly: ns per ball-step stays flat.
+// Step cost of the elastic backend against ball count in the standard gas, one substep per
+// 1/60 s step: ns per ball-step must stay flat (linear cost), the memory per ball small, and a
+// second worker thread must nearly halve the step. The first step is not timed.
 
 #include <benchmark/benchmark.h>
 
 #include "elastic/elastic_backend.h"
 #include "fooball/standard_scenes.h"
+#include "gas_counters.h"
 
-namespace fooball {
+namespace fooball::benchmarks {
 namespace {
 
+constexpr double kDt = 1.0 / 60.0;  // s
+
+/// Args: balls, packing fraction in percent. Counters beside the step cost:
+/// `bytes_per_ball`, every buffer the backend holds (its "memory_bytes" reading, from the
+/// vectors' capacities), and `heap_bytes_per_ball`, what the heap grew by from before the
+/// backend was made to after its first steps (glibc's mallinfo2) — the two should agree.
 void ElasticGasStep(benchmark::State& state) {
-  const auto count = static_cast<std::size_t>(state.range(0));
+  const auto balls = static_cast<std::size_t>(state.range(0));
+  const Scene scene = standardGas(balls, static_cast<double>(state.range(1)) / 100.0);
+  const std::size_t heapBefore = heapBytes();
   auto backend = makeElasticBackend();
   backend->setOption("substeps", 1);
-  backend->load(standardGas(count, 0.2));
-  backend->step(1.0 / 60.0, {});  // the first step grows buffers and sorts: not timed
+  backend->load(scene);
+  backend->step(kDt, {});  // grows the buffers and sorts the balls by cell: not timed
+  const double heapGrowth = static_cast<double>(heapBytes() - heapBefore);
+  const std::uint64_t collisionsBefore = backend->counters().ballCollisions;
   for (auto _ : state)
-    backend->step(1.0 / 60.0, {});
-  state.counters["ball_steps"] = benchmark::Counter(
-      static_cast<double>(count) * static_cast<double>(state.iterations()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);  // s per ball-step
-  state.counters["collisions_per_s"] = benchmark::Counter(
-      static_cast<double>(backend->counters().ballCollisions), benchmark::Counter::kIsRate);
+    backend->step(kDt, {});
+  setStepCounters(state, balls, backend->counters().ballCollisions - collisionsBefore);
+  state.counters["bytes_per_ball"] =
+      diagnostic(*backend, "memory_bytes") / static_cast<double>(balls);
+  state.counters["heap_bytes_per_ball"] = heapGrowth / static_cast<double>(balls);
 }
 
 BENCHMARK(ElasticGasStep)
-    ->RangeMultiplier(10)
-    ->Range(1'000, 1'000'000)
+    ->ArgNames({"balls", "phi_percent"})
+    ->ArgsProduct({{1'000, 10'000, 100'000, 1'000'000},
+                   {std::begin(kPackingPercents), std::end(kPackingPercents)}})
+    ->Repetitions(3)
     ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+    ->UseRealTime()
+    ->ComputeStatistics("min", minimum);
+
+/// Args: balls, threads; the standard gas at packing fraction 0.2. Compare the times of 1 and
+/// 2 threads at the same count for the speed-up (the results are the same bit for bit:
+/// tests/elastic_threads_test.cpp). 64 steps each: four periods of the (serial) reordering of
+/// the balls by cell, which a shorter run would catch or miss by chance.
+void ElasticThreads(benchmark::State& state) {
+  const auto balls = static_cast<std::size_t>(state.range(0));
+  auto backend = makeElasticBackend();
+  backend->setOption("substeps", 1);
+  backend->setOption("threads", static_cast<double>(state.range(1)));
+  backend->load(standardGas(balls, 0.2));
+  backend->step(kDt, {});
+  for (auto _ : state)
+    backend->step(kDt, {});
+  setStepCounters(state, balls);
+}
+
+BENCHMARK(ElasticThreads)
+    ->ArgNames({"balls", "threads"})
+    ->ArgsProduct({{100'000, 400'000, 1'000'000}, {1, 2}})
+    ->Iterations(64)
+    ->Repetitions(3)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->ComputeStatistics("min", minimum);
 
 }  // namespace
-}  // namespace fooball
+}  // namespace fooball::benchmarks

@@ -6,10 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "capacity_command.h"
 #include "fooball/scene_error.h"
 #include "list_command.h"
 #include "run_command.h"
 #include "run_options.h"
+#include "tradeoff_command.h"
 #include "usage_error.h"
 
 namespace {
@@ -79,6 +81,99 @@ void readRunFlags(const RunFlags& flags, RunOptions& options) {
   if (flags.saveFlag->count() > 0) options.savePath = flags.savePath;
 }
 
+/// Declares `capacity`'s flags; the optional paths are read back by readCapacityFlags.
+struct CapacityFlags {
+  std::string csvPath;
+  std::string chartPath;
+  CLI::Option* csvFlag = nullptr;
+  CLI::Option* chartFlag = nullptr;
+};
+
+void addCapacityFlags(CLI::App& capacity, CapacityOptions& options, CapacityFlags& flags) {
+  capacity
+      .add_option("--backend", options.backends, "backend to measure (repeatable; default all)")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
+  capacity.add_option("--budget-ms", options.budgetMs, "time one step may take, in ms")
+      ->type_name("MS")
+      ->default_str("16.67");
+  capacity
+      .add_option("--packing-fraction", options.packingFraction,
+                  "share of the box the standard gas covers")
+      ->type_name("PHI")
+      ->capture_default_str();
+  capacity.add_option("--steps", options.steps, "timed steps per ball count (the median counts)")
+      ->type_name("K")
+      ->capture_default_str();
+  capacity.add_option("--time-limit", options.timeLimitSeconds, "seconds per backend, at most")
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  capacity
+      .add_option("--option", options.assignments,
+                  "set a backend option on every backend that has it (repeatable), e.g. "
+                  "substeps=1")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+  flags.csvFlag = capacity.add_option("--csv", flags.csvPath, "write backend,balls,median_step_ms")
+                      ->type_name("FILE");
+  flags.chartFlag =
+      capacity.add_option("--chart", flags.chartPath, "draw step time against ball count (PNG)")
+          ->type_name("FILE.png");
+  capacity.add_flag("--quiet", options.quiet, "print no table and no progress");
+}
+
+void readCapacityFlags(const CapacityFlags& flags, CapacityOptions& options) {
+  if (flags.csvFlag->count() > 0) options.csvPath = flags.csvPath;
+  if (flags.chartFlag->count() > 0) options.chartPath = flags.chartPath;
+}
+
+/// Declares `tradeoff`'s flags; the optional paths are read back by readTradeoffFlags.
+struct TradeoffFlags {
+  std::string scenePath;
+  std::string csvPath;
+  std::string chartPath;
+  CLI::Option* sceneFlag = nullptr;
+  CLI::Option* csvFlag = nullptr;
+  CLI::Option* chartFlag = nullptr;
+};
+
+void addTradeoffFlags(CLI::App& tradeoff, TradeoffOptions& options, TradeoffFlags& flags) {
+  flags.sceneFlag =
+      tradeoff.add_option("--scene", flags.scenePath, "scene file (JSON) to measure on")
+          ->type_name("FILE");
+  tradeoff.add_option("--preset", options.presetName, "built-in scene to measure on (see 'list')")
+      ->type_name("NAME")
+      ->capture_default_str()
+      ->excludes(flags.sceneFlag);
+  tradeoff
+      .add_option("--backend", options.backends, "backend to measure (repeatable; default all)")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
+  tradeoff
+      .add_option("--duration", options.duration,
+                  "simulated seconds per run (cost, energy, momentum, overlap)")
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  tradeoff
+      .add_option("--compare-at", options.compareAt,
+                  "simulated second at which positions are compared with the exact backend's")
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  flags.csvFlag =
+      tradeoff.add_option("--csv", flags.csvPath, "write one row per backend and setting")
+          ->type_name("FILE");
+  flags.chartFlag =
+      tradeoff.add_option("--chart", flags.chartPath, "draw cost against errors (PNG)")
+          ->type_name("FILE.png");
+  tradeoff.add_flag("--quiet", options.quiet, "print no table and no progress");
+}
+
+void readTradeoffFlags(const TradeoffFlags& flags, TradeoffOptions& options) {
+  if (flags.sceneFlag->count() > 0) options.scenePath = flags.scenePath;
+  if (flags.csvFlag->count() > 0) options.csvPath = flags.csvPath;
+  if (flags.chartFlag->count() > 0) options.chartPath = flags.chartPath;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,10 +183,20 @@ int main(int argc, char** argv) {
   app.footer("Exit codes: 0 ok, 2 bad arguments or bad scene, 1 any other failure.");
   CLI::App* list = app.add_subcommand("list", "list the backends with their options, and presets");
   CLI::App* run = app.add_subcommand("run", "run a scene and report energy and momentum");
+  CLI::App* capacity = app.add_subcommand(
+      "capacity", "find how many balls each backend steps within a frame budget");
+  CLI::App* tradeoff =
+      app.add_subcommand("tradeoff", "measure each backend's cost against its errors");
 
   RunOptions runOptions;
   RunFlags runFlags;
   addRunFlags(*run, runOptions, runFlags);
+  CapacityOptions capacityOptions;
+  CapacityFlags capacityFlags;
+  addCapacityFlags(*capacity, capacityOptions, capacityFlags);
+  TradeoffOptions tradeoffOptions;
+  TradeoffFlags tradeoffFlags;
+  addTradeoffFlags(*tradeoff, tradeoffOptions, tradeoffFlags);
 
   try {
     app.parse(argc, argv);
@@ -106,6 +211,12 @@ int main(int argc, char** argv) {
   try {
     if (list->parsed()) {
       printList(std::cout);
+    } else if (capacity->parsed()) {
+      readCapacityFlags(capacityFlags, capacityOptions);
+      capacityCommand(capacityOptions, std::cout);
+    } else if (tradeoff->parsed()) {
+      readTradeoffFlags(tradeoffFlags, tradeoffOptions);
+      tradeoffCommand(tradeoffOptions, std::cout);
     } else {
       readRunFlags(runFlags, runOptions);
       runCommand(runOptions, std::cout);

@@ -1,23 +1,37 @@
 #include "pair_collisions.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 namespace fooball::elastic {
 
 namespace {
 
-void resolvePair(BallArrays& balls, std::uint32_t a, std::uint32_t b, BackendCounters& counters) {
-  double dx = balls.x[b] - balls.x[a];
-  double dy = balls.y[b] - balls.y[a];
-  const double reach = balls.radius[a] + balls.radius[b];
-  const double distanceSquared = dx * dx + dy * dy;
-  if (distanceSquared >= reach * reach) return;
+/// The lower ball of the pairs being resolved: its centre and radius stay in registers while
+/// it meets its candidates, and go back to memory only if a collision moved it.
+struct Probe {
+  Ball& ball;
+  double x, y;    ///< m
+  double radius;  ///< m
+  bool moved = false;
+};
 
+/// Separates and collides `a` with `b`, which overlap: their centres are (dx, dy) apart (m),
+/// the squared distance `distanceSquared` below the squared sum of their radii. Out of line:
+/// most candidates do not overlap, and the test loop stays small.
+[[gnu::noinline]] bool resolveOverlap(Probe& a, Ball& b, double dx, double dy,
+                                      double distanceSquared) {
+  Ball& ballA = a.ball;
+  const double reach = a.radius + b.radius;
   double distance = std::sqrt(distanceSquared);
+  const double penetration = reach - distance;
   if (distance == 0.0) {
     // Coincident centres: push apart along the relative velocity if there is one, else along x.
-    dx = balls.vx[a] - balls.vx[b];
-    dy = balls.vy[a] - balls.vy[b];
+    dx = ballA.vx - b.vx;
+    dy = ballA.vy - b.vy;
     distance = std::hypot(dx, dy);
     if (distance == 0.0) {
       dx = 1.0;
@@ -27,36 +41,134 @@ void resolvePair(BallArrays& balls, std::uint32_t a, std::uint32_t b, BackendCou
   }
   const double nx = dx / distance;
   const double ny = dy / distance;
-  const double ma = balls.mass[a];
-  const double mb = balls.mass[b];
   // Shares of the correction: b moves ma/(ma+mb) of it, a the rest; written as 1/(1 + m/m')
   // so mass ratios of 1e8 neither overflow nor lose the light ball's share.
-  const double shareA = 1.0 / (1.0 + ma / mb);
-  const double shareB = 1.0 / (1.0 + mb / ma);
-  const double penetration = reach - std::sqrt(distanceSquared);
-  balls.x[a] -= nx * penetration * shareA;
-  balls.y[a] -= ny * penetration * shareA;
-  balls.x[b] += nx * penetration * shareB;
-  balls.y[b] += ny * penetration * shareB;
+  const double shareA = 1.0 / (1.0 + ballA.mass / b.mass);
+  const double shareB = 1.0 / (1.0 + b.mass / ballA.mass);
+  a.x -= nx * penetration * shareA;
+  a.y -= ny * penetration * shareA;
+  a.moved = true;
+  b.x += nx * penetration * shareB;
+  b.y += ny * penetration * shareB;
 
   const double closingSpeed =
-      (balls.vx[a] - balls.vx[b]) * nx + (balls.vy[a] - balls.vy[b]) * ny;  // m/s, > 0 approaching
-  if (closingSpeed <= 0.0) return;
+      (ballA.vx - b.vx) * nx + (ballA.vy - b.vy) * ny;  // m/s, > 0 approaching
+  if (closingSpeed <= 0.0) return false;
   // Δv_a = −2 mb/(ma+mb)·u_n, Δv_b = +2 ma/(ma+mb)·u_n: momentum and energy conserved exactly.
   const double kickA = 2.0 * shareA * closingSpeed;
   const double kickB = 2.0 * shareB * closingSpeed;
-  balls.vx[a] -= nx * kickA;
-  balls.vy[a] -= ny * kickA;
-  balls.vx[b] += nx * kickB;
-  balls.vy[b] += ny * kickB;
-  ++counters.ballCollisions;
+  ballA.vx -= nx * kickA;
+  ballA.vy -= ny * kickA;
+  b.vx += nx * kickB;
+  b.vy += ny * kickB;
+  return true;
+}
+
+constexpr std::size_t kLanes = NeighbourSlots::kLanes;
+
+/// How many cells ahead the pair search prefetches the row above.
+constexpr int kPrefetchCells = 4;
+
+/// Bit j set when `a` overlaps the ball in slot slots[j], j < kLanes. Written as
+/// !(d² ≥ reach²) so a NaN counts as an overlap, as in the one-by-one test.
+inline unsigned overlapMask(const Probe& a, std::span<const Ball> balls,
+                            const std::uint32_t* slots) {
+  unsigned mask = 0;
+  for (std::size_t lane = 0; lane < kLanes; ++lane) {
+    const Ball& b = balls[slots[lane]];
+    const double dx = b.x - a.x;
+    const double dy = b.y - a.y;
+    const double reach = a.radius + b.radius;
+    mask |= static_cast<unsigned>(!(dx * dx + dy * dy >= reach * reach)) << lane;
+  }
+  return mask;
+}
+
+/// Lanes 0 … count−1.
+inline unsigned lanesBelow(std::size_t count) {
+  return (1u << std::min(count, kLanes)) - 1;
+}
+
+/// `a` against the balls in the slots `candidates`; returns the impulses exchanged.
+std::uint64_t meet(Probe& a, std::span<Ball> balls, std::span<const std::uint32_t> candidates) {
+  std::uint64_t impulses = 0;
+  for (std::size_t base = 0; base < candidates.size(); base += kLanes) {
+    const std::uint32_t* slots = candidates.data() + base;
+    const unsigned lanes = lanesBelow(candidates.size() - base);
+    unsigned overlapping = overlapMask(a, balls, slots) & lanes;
+    while (overlapping != 0) {
+      const int lane = std::countr_zero(overlapping);
+      Ball& b = balls[slots[lane]];
+      const double dx = b.x - a.x;
+      const double dy = b.y - a.y;
+      impulses += resolveOverlap(a, b, dx, dy, dx * dx + dy * dy);
+      // `a` has moved: the later lanes are tested again from its new centre, exactly as one by
+      // one.
+      overlapping = overlapMask(a, balls, slots) & lanes & ~((2u << lane) - 1);
+    }
+  }
+  return impulses;
 }
 
 }  // namespace
 
-void collidePairs(BallArrays& balls, const CellGrid& grid, BackendCounters& counters) {
-  grid.forEachNearbyPair(
-      [&](std::uint32_t a, std::uint32_t b) { resolvePair(balls, a, b, counters); });
+void NeighbourSlots::gather(std::span<const std::uint32_t> hereAndRight,
+                            std::span<const std::uint32_t> above) {
+  constexpr std::size_t kCopy = CellLists::kReadPastEnd;
+  size_ = hereAndRight.size() + above.size();
+  std::uint32_t* slots = usual_.data();
+  if (hereAndRight.size() <= kCopy && above.size() <= kCopy) {
+    // Fixed-size copies, no loop to mispredict; what they read past a range is overwritten or
+    // beyond size_.
+    std::memcpy(slots, hereAndRight.data(), kCopy * sizeof(std::uint32_t));
+    std::memcpy(slots + hereAndRight.size(), above.data(), kCopy * sizeof(std::uint32_t));
+  } else {
+    if (crowded_.size() < size_ + kLanes) crowded_.resize(size_ + kLanes);
+    slots = crowded_.data();
+    std::copy(hereAndRight.begin(), hereAndRight.end(), slots);
+    std::copy(above.begin(), above.end(), slots + hereAndRight.size());
+  }
+  // The lanes past the end read the cell's first ball and are masked out. That ball, not any
+  // other: it is the worker's own, so the reads race with no other worker's writes.
+  std::fill_n(slots + size_, kLanes, slots[0]);
+  slots_ = slots;
+}
+
+std::uint64_t collideRows(std::span<Ball> balls, const CellLists& cells, int firstRow, int endRow,
+                          NeighbourSlots& neighbours) {
+  const int columns = cells.columns();
+  std::uint64_t impulses = 0;
+  for (int row = firstRow; row < endRow; ++row) {
+    const bool rowAbove = row + 1 < cells.rows();
+    for (int column = 0; column < columns; ++column) {
+      const int cell = row * columns + column;
+      // The balls of the row above are met here for the first time this substep: fetch those a
+      // few cells ahead now, so their cache misses overlap with this cell's work.
+      if (rowAbove && column + kPrefetchCells < columns) {
+        // The first two slots, however many the cell has (the slots may be read past a range):
+        // a loop of one or two turns would cost a mispredicted branch per cell.
+        const std::uint32_t* ahead = cells.slotsFrom(cell + columns + kPrefetchCells);
+        __builtin_prefetch(&balls[ahead[0]]);
+        __builtin_prefetch(&balls[ahead[1]]);
+      }
+      const std::size_t hereCount = cells.slotsIn(cell, cell + 1).size();
+      if (hereCount == 0) continue;
+      const int aboveLeft = cell + columns - (column > 0 ? 1 : 0);
+      const int aboveEnd = cell + columns + (column + 1 < columns ? 2 : 1);
+      neighbours.gather(cells.slotsIn(cell, std::min(cell + 2, (row + 1) * columns)),
+                        rowAbove ? cells.slotsIn(aboveLeft, aboveEnd) : cells.slotsIn(cell, cell));
+      for (std::size_t k = 0; k < hereCount; ++k) {
+        Ball& ball = balls[neighbours[k]];
+        Probe a{ball, ball.x, ball.y, ball.radius};
+        impulses += meet(a, balls, neighbours.after(k));
+        if (a.moved) {
+          ball.x = a.x;
+          ball.y = a.y;
+        }
+      }
+    }
+  }
+  return impulses;
 }
 
 }  // namespace fooball::elastic

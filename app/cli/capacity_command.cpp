@@ -1,0 +1,86 @@
+#include "capacity_command.h"
+
+#include <fstream>
+#include <stdexcept>
+
+#include "capacity.h"
+#include "capacity_chart.h"
+#include "chosen_backends.h"
+#include "number_text.h"
+#include "progress_line.h"
+#include "run_setup.h"
+#include "status_line.h"
+#include "text_table.h"
+#include "usage_error.h"
+
+namespace fooball::cli {
+
+namespace {
+
+measure::CapacitySettings settingsFrom(const CapacityOptions& options) {
+  measure::CapacitySettings settings;
+  settings.budgetMs = options.budgetMs;
+  settings.packingFraction = options.packingFraction;
+  settings.timedSteps = options.steps;
+  settings.options = options.assignments;
+  settings.limits.timeLimitSeconds = options.timeLimitSeconds;
+  return settings;
+}
+
+std::string noteOf(const measure::SearchOutcome& outcome) {
+  if (outcome.reachedMaxBalls) return "the scene format's limit: capacity is higher";
+  if (outcome.timedOut) return "time limit: best count so far";
+  if (outcome.cancelled) return "cancelled";
+  return "";
+}
+
+void printTable(const std::vector<measure::CapacityResult>& results,
+                const measure::CapacitySettings& settings, std::ostream& out) {
+  out << "Capacity: the most balls whose median step fits " << readableText(settings.budgetMs, 4)
+      << " ms\n(standard gas at packing fraction " << readableText(settings.packingFraction)
+      << ", one step = " << readableText(settings.dt, 4) << " s, median of " << settings.timedSteps
+      << " steps after one untimed step; default options";
+  for (const std::string& option : settings.options)
+    out << ", " << option;
+  out << ")\n\n";
+  TextTable table;
+  table.addRow({"backend", "balls", "median step", "counts measured", "note"});
+  for (const measure::CapacityResult& result : results) {
+    table.addRow({result.backend, std::to_string(result.outcome.balls),
+                  readableText(result.outcome.medianStepMs, 4) + " ms",
+                  std::to_string(result.outcome.probes.size()), noteOf(result.outcome)});
+  }
+  table.print(out, 2);
+}
+
+}  // namespace
+
+void capacityCommand(const CapacityOptions& options, std::ostream& out) {
+  const std::vector<BackendInfo> backends = chosenBackends(options.backends);
+  const measure::CapacitySettings settings = settingsFrom(options);
+  if (!(options.timeLimitSeconds > 0.0)) throw UsageError("--time-limit: must be > 0");
+  measure::checkCapacitySettings(backends, settings);
+  if (options.csvPath) checkWritableFile(*options.csvPath, "--csv");
+  if (options.chartPath) checkWritableFile(*options.chartPath, "--chart");
+
+  StatusLine status(!options.quiet && ProgressLine::stderrIsTerminal());
+  const auto progress = [&](const measure::CapacityProgress& at) {
+    status.show(readableText(100.0 * at.fraction, 3) + "%  " + std::string(at.backend) + ": " +
+                std::to_string(at.search.latest.balls) + " balls, median step " +
+                readableText(at.search.latest.medianStepMs, 3) + " ms");
+  };
+  const std::vector<measure::CapacityResult> results =
+      measure::measureCapacity(backends, settings, progress);
+  status.clear();
+
+  if (!options.quiet) printTable(results, settings, out);
+  if (options.csvPath) {
+    std::ofstream csv(*options.csvPath);
+    measure::writeCapacityCsv(csv, results);
+    csv.close();
+    if (!csv) throw std::runtime_error(options.csvPath->string() + ": cannot write the CSV file");
+  }
+  if (options.chartPath) plots::saveCapacityChart(results, settings, *options.chartPath);
+}
+
+}  // namespace fooball::cli

@@ -1,0 +1,128 @@
+#include "capacity_chart.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QScatterSeries>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "chart_image.h"
+#include "offscreen_qt.h"
+
+namespace fooball::plots {
+
+namespace {
+
+double decadeBelow(double value) {
+  return std::pow(10.0, std::floor(std::log10(value)));
+}
+double decadeAbove(double value) {
+  return std::pow(10.0, std::ceil(std::log10(value)));
+}
+
+QLogValueAxis* logAxis(const QString& title, double low, double high) {
+  auto* axis = new QLogValueAxis;
+  axis->setTitleText(title);
+  axis->setLabelFormat("%g");
+  axis->setBase(10.0);
+  axis->setMinorTickCount(8);
+  // Whole decades around the data, so the ticks are 1, 10, 100, …
+  axis->setRange(decadeBelow(low), decadeAbove(high));
+  axis->setGridLineVisible(true);
+  axis->setMinorGridLineVisible(true);
+  return axis;
+}
+
+QString countText(std::size_t balls) {
+  if (balls >= 10'000)
+    return QString::number(std::round(static_cast<double>(balls) / 1000.0)) + "k";
+  return QString::number(balls);
+}
+
+}  // namespace
+
+void saveCapacityChart(std::span<const measure::CapacityResult> results,
+                       const measure::CapacitySettings& settings,
+                       const std::filesystem::path& path) {
+  const OffscreenQt qt;
+  auto* chart = new QChart;
+  chart->legend()->setAlignment(Qt::AlignBottom);
+
+  double leastBalls = std::numeric_limits<double>::infinity();
+  double mostBalls = 1.0;
+  double leastMs = settings.budgetMs;
+  double mostMs = settings.budgetMs;
+  std::vector<QAbstractSeries*> series;
+  for (const measure::CapacityResult& result : results) {
+    std::vector<measure::Probe> probes = result.outcome.probes;
+    std::sort(probes.begin(), probes.end(),
+              [](const measure::Probe& a, const measure::Probe& b) { return a.balls < b.balls; });
+    auto* cost = new QLineSeries;
+    cost->setName(QString::fromStdString(result.backend) + ": " + countText(result.outcome.balls) +
+                  " balls");
+    cost->setColor(backendColor(result.backend));
+    cost->setPointsVisible(true);
+    cost->setMarkerSize(5.0);
+    for (const measure::Probe& probe : probes) {
+      const double ms = std::max(probe.medianStepMs, 1e-4);  // a log axis has no 0
+      cost->append(static_cast<double>(probe.balls), ms);
+      leastBalls = std::min(leastBalls, static_cast<double>(probe.balls));
+      mostBalls = std::max(mostBalls, static_cast<double>(probe.balls));
+      leastMs = std::min(leastMs, ms);
+      mostMs = std::max(mostMs, ms);
+    }
+    series.push_back(cost);
+    if (result.outcome.balls > 0) {
+      auto* capacity = new QScatterSeries;
+      capacity->setColor(backendColor(result.backend));
+      capacity->setBorderColor(Qt::black);
+      capacity->setMarkerSize(12.0);
+      capacity->append(static_cast<double>(result.outcome.balls), result.outcome.medianStepMs);
+      series.push_back(capacity);
+    }
+  }
+  if (!std::isfinite(leastBalls)) leastBalls = 1.0;
+
+  auto* budget = new QLineSeries;
+  budget->setName(QString("budget %1 ms").arg(settings.budgetMs, 0, 'g', 4));
+  budget->setColor(Qt::darkRed);
+  budget->setPen(QPen(Qt::darkRed, 1.5, Qt::DashLine));
+  budget->append(decadeBelow(leastBalls), settings.budgetMs);
+  budget->append(decadeAbove(mostBalls), settings.budgetMs);
+  series.push_back(budget);
+
+  QLogValueAxis* xAxis = logAxis("balls (standard gas)", leastBalls, mostBalls);
+  QLogValueAxis* yAxis = logAxis("median step (ms)", leastMs, mostMs);
+  chart->addAxis(xAxis, Qt::AlignBottom);
+  chart->addAxis(yAxis, Qt::AlignLeft);
+  for (QAbstractSeries* one : series) {
+    chart->addSeries(one);
+    one->attachAxis(xAxis);
+    one->attachAxis(yAxis);
+  }
+  // The capacity markers repeat their backend's colour: only the cost lines need a legend entry.
+  for (QAbstractSeries* one : series) {
+    if (one->type() == QAbstractSeries::SeriesTypeScatter) {
+      for (QLegendMarker* marker : chart->legend()->markers(one))
+        marker->setVisible(false);
+    }
+  }
+
+  QString options;
+  for (const std::string& option : settings.options)
+    options += ", " + QString::fromStdString(option);
+  const QString title = QString(
+                            "Capacity: the most balls whose median step fits %1 ms "
+                            "(standard gas at packing fraction %2, dt %3 s%4)")
+                            .arg(settings.budgetMs, 0, 'g', 4)
+                            .arg(settings.packingFraction)
+                            .arg(settings.dt, 0, 'g', 4)
+                            .arg(options);
+  saveCharts({chart}, title, 1000, 640, path);
+}
+
+}  // namespace fooball::plots

@@ -1,0 +1,58 @@
+#include "chart_image.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPixmap>
+#include <QVBoxLayout>
+#include <QWidget>
+#include <stdexcept>
+
+#include "registry.h"
+
+namespace fooball::plots {
+
+QColor backendColor(std::string_view backend) {
+  static const QColor kPalette[] = {QColor(0xe0, 0xa0, 0x30), QColor(0x3a, 0x7c, 0xc8),
+                                    QColor(0x3c, 0xa0, 0x55), QColor(0xb0, 0x4a, 0xb0),
+                                    QColor(0x80, 0x80, 0x80)};
+  constexpr std::size_t kColors = std::size(kPalette);
+  std::size_t index = 0;
+  for (const BackendInfo& info : registeredBackends()) {
+    if (info.name == backend) return kPalette[std::min(index, kColors - 1)];
+    ++index;
+  }
+  return kPalette[kColors - 1];
+}
+
+void saveCharts(std::vector<QChart*> charts, const QString& title, int chartWidth, int height,
+                const std::filesystem::path& path) {
+  QWidget page;
+  page.setAttribute(Qt::WA_DontShowOnScreen);
+  page.setStyleSheet("background: white;");
+  auto* column = new QVBoxLayout(&page);
+  auto* heading = new QLabel(title);
+  QFont font = heading->font();
+  font.setPointSize(font.pointSize() + 3);
+  font.setBold(true);
+  heading->setFont(font);
+  heading->setAlignment(Qt::AlignCenter);
+  column->addWidget(heading);
+  auto* row = new QHBoxLayout;
+  column->addLayout(row);
+  for (QChart* chart : charts) {
+    auto* view = new QChartView(chart);  // the view owns the chart
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setFixedSize(chartWidth, height);
+    row->addWidget(view);
+  }
+  page.show();  // lays the page out; WA_DontShowOnScreen keeps it off any screen
+  const QPixmap image = page.grab();
+  const QString file = QString::fromStdString(path.string());
+  if (!image.save(file, "PNG")) {
+    throw std::runtime_error(path.string() + ": cannot write the chart image");
+  }
+}
+
+}  // namespace fooball::plots

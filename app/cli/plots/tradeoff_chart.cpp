@@ -1,0 +1,130 @@
+#include "tradeoff_chart.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QScatterSeries>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "chart_image.h"
+#include "offscreen_qt.h"
+#include "pareto.h"
+
+namespace fooball::plots {
+
+namespace {
+
+/// One panel's error: which field, how the axis names it.
+struct ErrorAxis {
+  double measure::TradeoffPoint::*error;
+  QString title;
+};
+
+double decadeBelow(double value) {
+  return std::pow(10.0, std::floor(std::log10(value)));
+}
+double decadeAbove(double value) {
+  return std::pow(10.0, std::ceil(std::log10(value)));
+}
+
+QLogValueAxis* logAxis(const QString& title, double low, double high) {
+  auto* axis = new QLogValueAxis;
+  axis->setTitleText(title);
+  axis->setLabelFormat("%.0e");
+  axis->setBase(10.0);
+  axis->setRange(decadeBelow(low), std::max(decadeAbove(high), 10.0 * decadeBelow(low)));
+  return axis;
+}
+
+/// The backends in the order their points first appear.
+std::vector<std::string> backendsOf(std::span<const measure::TradeoffPoint> points) {
+  std::vector<std::string> backends;
+  for (const measure::TradeoffPoint& point : points) {
+    if (std::find(backends.begin(), backends.end(), point.setting.backend) == backends.end())
+      backends.push_back(point.setting.backend);
+  }
+  return backends;
+}
+
+QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& axis) {
+  // Zero errors sit a decade below the smallest non-zero one: a log axis has no 0.
+  double leastError = std::numeric_limits<double>::infinity();
+  double mostError = 0.0;
+  double leastCost = std::numeric_limits<double>::infinity();
+  double mostCost = 0.0;
+  for (const measure::TradeoffPoint& point : points) {
+    const double error = point.*axis.error;
+    if (error > 0.0) leastError = std::min(leastError, error);
+    mostError = std::max(mostError, error);
+    leastCost = std::min(leastCost, point.cpuMsPerSimulatedSecond);
+    mostCost = std::max(mostCost, point.cpuMsPerSimulatedSecond);
+  }
+  if (!std::isfinite(leastError)) leastError = 1e-16;
+  const double zeroAt = decadeBelow(leastError) / 10.0;
+  if (!std::isfinite(leastCost)) leastCost = mostCost = 1.0;
+  const auto shown = [&](double error) { return error > 0.0 ? error : zeroAt; };
+
+  auto* chart = new QChart;
+  chart->legend()->setAlignment(Qt::AlignBottom);
+  QLogValueAxis* xAxis = logAxis("CPU ms per simulated second", leastCost, mostCost);
+  QLogValueAxis* yAxis = logAxis(axis.title, zeroAt, std::max(mostError, zeroAt));
+  chart->addAxis(xAxis, Qt::AlignBottom);
+  chart->addAxis(yAxis, Qt::AlignLeft);
+  const auto add = [&](QAbstractSeries* series, bool inLegend) {
+    chart->addSeries(series);
+    series->attachAxis(xAxis);
+    series->attachAxis(yAxis);
+    if (!inLegend) {
+      for (QLegendMarker* marker : chart->legend()->markers(series))
+        marker->setVisible(false);
+    }
+  };
+
+  for (const std::string& backend : backendsOf(points)) {
+    auto* scatter = new QScatterSeries;
+    const bool allZero = std::all_of(points.begin(), points.end(), [&](const auto& point) {
+      return point.setting.backend != backend || point.*axis.error == 0.0;
+    });
+    scatter->setName(QString::fromStdString(backend) +
+                     (allZero ? " (error 0: at the bottom)" : ""));
+    scatter->setColor(backendColor(backend));
+    scatter->setMarkerSize(9.0);
+    std::vector<measure::CostAndError> own;
+    for (const measure::TradeoffPoint& point : points) {
+      if (point.setting.backend != backend) continue;
+      scatter->append(point.cpuMsPerSimulatedSecond, shown(point.*axis.error));
+      own.push_back({point.cpuMsPerSimulatedSecond, point.*axis.error});
+    }
+    add(scatter, true);
+    auto* front = new QLineSeries;
+    front->setPen(QPen(backendColor(backend), 2.0));
+    for (const std::size_t i : measure::paretoFront(own))
+      front->append(own[i].cost, shown(own[i].error));
+    add(front, false);
+  }
+  return chart;
+}
+
+}  // namespace
+
+void saveTradeoffChart(std::span<const measure::TradeoffPoint> points, const std::string& scene,
+                       const measure::TradeoffSettings& settings,
+                       const std::filesystem::path& path) {
+  const OffscreenQt qt;
+  const QString trajectory =
+      QString("RMS distance from the exact run at %1 s (m)").arg(settings.compareAt);
+  const QString energy = QString("largest energy error in %1 s (relative)").arg(settings.duration);
+  const std::vector<QChart*> charts = {
+      panel(points, {&measure::TradeoffPoint::trajectoryError, trajectory}),
+      panel(points, {&measure::TradeoffPoint::energyError, energy})};
+  const QString title = QString("Speed against accuracy on %1 (dt %2 s; lines: Pareto fronts)")
+                            .arg(QString::fromStdString(scene))
+                            .arg(settings.dt, 0, 'g', 4);
+  saveCharts(charts, title, 720, 600, path);
+}
+
+}  // namespace fooball::plots

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace fooball::elastic {
+
+/// The broadphase: a uniform grid over the box, and the balls' slots sorted by cell (a counting
+/// sort, O(N), rebuilt every substep). Cells are at least one largest diameter wide, so a ball's
+/// neighbours are in its own and the 8 adjacent cells.
+///
+/// Built in phases that a team of workers shares: each worker computes the cells of its own
+/// balls (setCell), then counts, prefix-sums and scatters the balls of its own share of the cells.
+/// The result is a pure function of the balls' cells — slots ascending within each cell —
+/// whatever the number of workers.
+///
+/// Memory: 8 bytes per ball (cell and sorted slot) plus 4 per cell, with at most
+/// kCellsPerBall cells per ball.
+class CellLists {
+ public:
+  /// Sizes the grid for `ballCount` balls in [0,width] × [0,height] (m), cells at least
+  /// `minCellSize` (m) wide, and splits the cells into `workers` contiguous shares.
+  void layout(std::size_t ballCount, double width, double height, double minCellSize, int workers);
+
+  int columns() const { return columns_; }
+  int rows() const { return rows_; }
+
+  /// The cell holding (x, y) (m). Points outside the box are clamped into the border cells, so
+  /// every ball is found; NaN goes to cell 0 rather than to undefined behaviour.
+  std::uint32_t cellAt(double x, double y) const {
+    const double fx = x * inverseCellSize_;
+    const double fy = y * inverseCellSize_;
+    const int column = fx > 0.0 ? (fx < columns_ ? static_cast<int>(fx) : columns_ - 1) : 0;
+    const int row = fy > 0.0 ? (fy < rows_ ? static_cast<int>(fy) : rows_ - 1) : 0;
+    return static_cast<std::uint32_t>(row * columns_ + column);
+  }
+  void setCell(std::size_t slot, std::uint32_t cell) { cellOfSlot_[slot] = cell; }
+
+  /// Phase 1 of a build, after every ball's setCell: counts the balls in `worker`'s share of the
+  /// cells.
+  void countShare(int worker);
+  /// Phase 2, after every worker's countShare: sorts the slots of `worker`'s share of the cells.
+  void sortShare(int worker);
+
+  /// Slots of the balls in cells [firstCell, endCell), ascending by cell: neighbouring cells in
+  /// a row are contiguous here, which the pair search uses. At least kReadPastEnd more entries
+  /// may be read after any range (their values mean nothing), for copies of a fixed size.
+  std::span<const std::uint32_t> slotsIn(int firstCell, int endCell) const {
+    return {sortedSlots_.data() + cellStart_[firstCell], sortedSlots_.data() + cellStart_[endCell]};
+  }
+  /// Where the slots of cell `cell` begin (kReadPastEnd entries may be read from there).
+  const std::uint32_t* slotsFrom(int cell) const { return sortedSlots_.data() + cellStart_[cell]; }
+  /// The balls' cells by slot, free for other use between sortShare and the next setCell.
+  std::span<std::uint32_t> cellsBySlot() { return cellOfSlot_; }
+  /// Every ball's slot, ascending by cell.
+  std::span<std::uint32_t> sortedSlots() { return {sortedSlots_.data(), cellOfSlot_.size()}; }
+
+  static constexpr std::size_t kReadPastEnd = 16;
+
+  std::size_t memoryBytes() const;
+
+  /// Cells per ball at most: cells smaller than this leave most cells empty and cost more to
+  /// scan than the pairs they save, and each costs 4 bytes.
+  static constexpr double kCellsPerBall = 0.75;
+
+ private:
+  /// One worker's cells.
+  struct CellShare {
+    std::uint32_t firstCell;
+    std::uint32_t endCell;
+    std::uint32_t ballCount;  ///< set by countShare
+  };
+
+  int columns_ = 1;
+  int rows_ = 1;
+  double inverseCellSize_ = 1.0;  ///< 1/m
+  std::vector<std::uint32_t> cellOfSlot_;
+  std::vector<std::uint32_t> sortedSlots_;
+  std::vector<std::uint32_t> cellStart_;  ///< cells + 1 prefix sums
+  std::vector<CellShare> shares_;
+};
+
+}  // namespace fooball::elastic

@@ -1,0 +1,141 @@
+// The elastic backend's `threads` option: any number of workers gives the trajectory of one
+// worker bit for bit, and a step with workers neither creates threads nor allocates.
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "allocation_counter.h"
+#include "elastic/elastic_backend.h"
+#include "fooball/standard_scenes.h"
+#include "test_scenes.h"
+
+namespace fooball {
+namespace {
+
+/// Tall enough for dozens of grid rows (so workers share the pair search), with gravity, drag
+/// and a pile on the floor, so walls, drag and dense contacts all take part.
+Scene busyScene(bool ballCollisions = true) {
+  Scene scene = standardGas(3000, 0.3, 5);
+  scene.world.gravity = {0.5, -9.81};
+  scene.world.airResistance = 0.05;
+  scene.world.ballCollisions = ballCollisions;
+  return scene;
+}
+
+struct Outcome {
+  std::vector<Vec2> positions;
+  std::vector<Vec2> velocities;
+  BackendCounters counters;
+};
+
+/// 40 steps of `scene` with `threads` workers and 2 substeps; every third step pushes every
+/// ball.
+Outcome outcomeWith(const Scene& scene, int threads) {
+  auto backend = makeElasticBackend();
+  backend->setOption("threads", threads);
+  backend->setOption("substeps", 2);
+  backend->load(scene);
+  const std::vector<Vec2> forces(scene.balls.size(), Vec2{0.3, 0.1});
+  for (int step = 0; step < 40; ++step) {
+    backend->step(1.0 / 60.0,
+                  step % 3 == 0 ? std::span<const Vec2>(forces) : std::span<const Vec2>());
+  }
+  Outcome outcome{std::vector<Vec2>(backend->ballCount()), std::vector<Vec2>(backend->ballCount()),
+                  backend->counters()};
+  backend->readState(outcome.positions, outcome.velocities);
+  return outcome;
+}
+
+void expectIdentical(const Outcome& a, const Outcome& b) {
+  ASSERT_EQ(a.positions.size(), b.positions.size());
+  for (std::size_t i = 0; i < a.positions.size(); ++i) {
+    ASSERT_EQ(a.positions[i], b.positions[i]) << "ball " << i;
+    ASSERT_EQ(a.velocities[i], b.velocities[i]) << "ball " << i;
+  }
+  EXPECT_EQ(a.counters.ballCollisions, b.counters.ballCollisions);
+  EXPECT_EQ(a.counters.wallCollisions, b.counters.wallCollisions);
+  EXPECT_EQ(a.counters.wallImpulse, b.counters.wallImpulse);
+  EXPECT_EQ(a.counters.dragLoss, b.counters.dragLoss);
+}
+
+TEST(ElasticThreads, TwoAndThreeWorkersGiveTheOneWorkerTrajectoryBitForBit) {
+  const Scene scene = busyScene();
+  const Outcome one = outcomeWith(scene, 1);
+  EXPECT_GT(one.counters.ballCollisions, 1000u);
+  expectIdentical(outcomeWith(scene, 2), one);
+  expectIdentical(outcomeWith(scene, 3), one);
+}
+
+TEST(ElasticThreads, WorkersGiveTheSameTrajectoryWithCollisionsOff) {
+  const Scene scene = busyScene(false);
+  expectIdentical(outcomeWith(scene, 2), outcomeWith(scene, 1));
+}
+
+TEST(ElasticThreads, ChangingTheWorkerCountMidRunChangesNothing) {
+  const Scene scene = busyScene();
+  auto switching = makeElasticBackend();
+  auto steady = makeElasticBackend();
+  switching->load(scene);
+  steady->load(scene);
+  for (int step = 0; step < 30; ++step) {
+    switching->setOption("threads", 1 + step % 3);
+    switching->step(1.0 / 60.0, {});
+    steady->step(1.0 / 60.0, {});
+  }
+  EXPECT_EQ(switching->save().balls.size(), scene.balls.size());
+  const Scene a = switching->save();
+  const Scene b = steady->save();
+  for (std::size_t i = 0; i < a.balls.size(); ++i) {
+    ASSERT_EQ(a.balls[i].position, b.balls[i].position) << "ball " << i;
+    ASSERT_EQ(a.balls[i].velocity, b.balls[i].velocity) << "ball " << i;
+  }
+}
+
+TEST(ElasticThreads, ReorderingByCellKeepsEveryBallOnce) {
+  // Balls are moved into cell order every few substeps, in place; 200 substeps of a gas with
+  // gravity move them far and often. Each ball keeps its radius and mass: none is lost or
+  // copied over another.
+  const Scene scene = busyScene();
+  for (const int threads : {1, 2}) {
+    auto backend = makeElasticBackend();
+    backend->setOption("threads", threads);
+    backend->load(scene);
+    for (int step = 0; step < 50; ++step)
+      backend->step(1.0 / 60.0, {});
+    const Scene saved = backend->save();
+    for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+      ASSERT_EQ(saved.balls[i].radius, scene.balls[i].radius) << "ball " << i;
+      ASSERT_EQ(saved.balls[i].mass, scene.balls[i].mass) << "ball " << i;
+    }
+  }
+}
+
+TEST(ElasticThreads, StepsWithTwoWorkersDoNotAllocate) {
+  auto backend = makeElasticBackend();
+  backend->setOption("threads", 2);
+  backend->load(busyScene());
+  for (int step = 0; step < 30; ++step)
+    backend->step(1.0 / 60.0, {});  // warm up: buffers grow to their working size
+  const long before = testing::allocationCount();
+  for (int step = 0; step < 30; ++step)
+    backend->step(1.0 / 60.0, {});
+  EXPECT_EQ(testing::allocationCount() - before, 0);
+}
+
+TEST(ElasticThreads, MemoryIsReportedPerBall) {
+  auto backend = makeElasticBackend();
+  const Scene scene = standardGas(20'000, 0.2);
+  backend->load(scene);
+  backend->step(1.0 / 60.0, {});
+  double memory = 0.0;
+  for (const Diagnostic& reading : backend->diagnostics()) {
+    if (reading.name == "memory_bytes") memory = reading.value;
+  }
+  // The balls alone take 52 bytes each; the budget is 64.
+  EXPECT_GE(memory / static_cast<double>(scene.balls.size()), 52.0);
+  EXPECT_LE(memory / static_cast<double>(scene.balls.size()), 64.0);
+}
+
+}  // namespace
+}  // namespace fooball
