@@ -146,11 +146,10 @@ void DiscRasterizer::strokeCircle(QPointF centre, double radius, double width, Q
   }
 }
 
-void DiscRasterizer::fillLargeDisc(QPointF centre, double radius, quint32 colour) {
+template <class DrawRow>
+void DiscRasterizer::forEachRowOfCircle(QPointF centre, double outer, DrawRow drawRow) const {
   const double cx = centre.x();
   const double cy = centre.y();
-  const double outer = radius + 0.5;  // beyond this a pixel centre gets no coverage
-  const double inner = radius - 0.5;  // within this a pixel is fully covered
   const int top = std::max(0, static_cast<int>(std::floor(cy - outer)));
   const int bottom = std::min(height_ - 1, static_cast<int>(std::floor(cy + outer)));
   for (int y = top; y <= bottom; ++y) {
@@ -160,6 +159,15 @@ void DiscRasterizer::fillLargeDisc(QPointF centre, double radius, quint32 colour
     const double outerHalf = std::sqrt(outer * outer - dy2);
     const int left = std::max(0, static_cast<int>(std::floor(cx - outerHalf)));
     const int right = std::min(width_ - 1, static_cast<int>(std::floor(cx + outerHalf)));
+    drawRow(row(y), dy2, left, right);
+  }
+}
+
+void DiscRasterizer::fillLargeDisc(QPointF centre, double radius, quint32 colour) {
+  const double cx = centre.x();
+  const double outer = radius + 0.5;  // beyond this a pixel centre gets no coverage
+  const double inner = radius - 0.5;  // within this a pixel is fully covered
+  forEachRowOfCircle(centre, outer, [&](quint32* pixels, double dy2, int left, int right) {
     // Pixels whose centres lie within the inner circle: [fullLeft, fullRight].
     int fullLeft = right + 1;
     int fullRight = right;
@@ -172,7 +180,6 @@ void DiscRasterizer::fillLargeDisc(QPointF centre, double radius, quint32 colour
         fullRight = last;
       }
     }
-    quint32* pixels = row(y);
     const auto rim = [&](int x) {
       const double dx = x + 0.5 - cx;
       cover(pixels[x], colour, outer - std::sqrt(dx * dx + dy2));
@@ -182,24 +189,15 @@ void DiscRasterizer::fillLargeDisc(QPointF centre, double radius, quint32 colour
     std::fill(pixels + fullLeft, pixels + fullRight + 1, colour);
     for (int x = fullRight + 1; x <= right; ++x)
       rim(x);
-  }
+  });
 }
 
 void DiscRasterizer::strokeLargeCircle(QPointF centre, double radius, double width,
                                        quint32 colour) {
   const double cx = centre.x();
-  const double cy = centre.y();
   const double outer = radius + 0.5;
   const double hole = radius - width - 0.5;  // within this a pixel gets no coverage
-  const int top = std::max(0, static_cast<int>(std::floor(cy - outer)));
-  const int bottom = std::min(height_ - 1, static_cast<int>(std::floor(cy + outer)));
-  for (int y = top; y <= bottom; ++y) {
-    const double dy = y + 0.5 - cy;
-    const double dy2 = dy * dy;
-    if (dy2 >= outer * outer) continue;
-    const double outerHalf = std::sqrt(outer * outer - dy2);
-    const int left = std::max(0, static_cast<int>(std::floor(cx - outerHalf)));
-    const int right = std::min(width_ - 1, static_cast<int>(std::floor(cx + outerHalf)));
+  forEachRowOfCircle(centre, outer, [&](quint32* pixels, double dy2, int left, int right) {
     int holeLeft = right + 1;
     int holeRight = right;
     if (hole > 0.0 && dy2 < hole * hole) {
@@ -207,7 +205,6 @@ void DiscRasterizer::strokeLargeCircle(QPointF centre, double radius, double wid
       holeLeft = static_cast<int>(std::ceil(cx - holeHalf - 0.5));
       holeRight = static_cast<int>(std::floor(cx + holeHalf - 0.5));
     }
-    quint32* pixels = row(y);
     for (int x = left; x <= right; ++x) {
       if (x >= holeLeft && x <= holeRight) {
         x = holeRight;
@@ -216,7 +213,7 @@ void DiscRasterizer::strokeLargeCircle(QPointF centre, double radius, double wid
       const double dx = x + 0.5 - cx;
       cover(pixels[x], colour, coverageAt(std::sqrt(dx * dx + dy2), radius, width));
     }
-  }
+  });
 }
 
 }  // namespace fooball::gui

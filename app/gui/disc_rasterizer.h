@@ -42,6 +42,10 @@ class DiscRasterizer {
   static void render(Sprite& sprite, int radiusStep, int widthStep, int subpixel);
   void drawSprite(QPointF centre, double radius, double width, quint32 colour);
   void blit(const Sprite& sprite, int left, int top, quint32 colour);
+  /// Calls drawRow(pixels, dy², left, right) for every image row the circle of radius `outer`
+  /// (px) crosses, with the clipped pixel range its outline spans on that row.
+  template <class DrawRow>
+  void forEachRowOfCircle(QPointF centre, double outer, DrawRow drawRow) const;
   void fillLargeDisc(QPointF centre, double radius, quint32 colour);
   void strokeLargeCircle(QPointF centre, double radius, double width, quint32 colour);
   quint32* row(int y) const { return reinterpret_cast<quint32*>(bits_ + y * bytesPerLine_); }

@@ -17,26 +17,6 @@ namespace fooball::plots {
 
 namespace {
 
-double decadeBelow(double value) {
-  return std::pow(10.0, std::floor(std::log10(value)));
-}
-double decadeAbove(double value) {
-  return std::pow(10.0, std::ceil(std::log10(value)));
-}
-
-QLogValueAxis* logAxis(const QString& title, double low, double high) {
-  auto* axis = new QLogValueAxis;
-  axis->setTitleText(title);
-  axis->setLabelFormat("%g");
-  axis->setBase(10.0);
-  axis->setMinorTickCount(8);
-  // Whole decades around the data, so the ticks are 1, 10, 100, …
-  axis->setRange(decadeBelow(low), decadeAbove(high));
-  axis->setGridLineVisible(true);
-  axis->setMinorGridLineVisible(true);
-  return axis;
-}
-
 QString countText(std::size_t balls) {
   if (balls >= 10'000)
     return QString::number(std::round(static_cast<double>(balls) / 1000.0)) + "k";
@@ -95,8 +75,8 @@ void saveCapacityChart(std::span<const measure::CapacityResult> results,
   budget->append(decadeAbove(mostBalls), settings.budgetMs);
   series.push_back(budget);
 
-  QLogValueAxis* xAxis = logAxis("balls (standard gas)", leastBalls, mostBalls);
-  QLogValueAxis* yAxis = logAxis("median step (ms)", leastMs, mostMs);
+  QLogValueAxis* xAxis = decadeAxis("balls (standard gas)", leastBalls, mostBalls, "%g");
+  QLogValueAxis* yAxis = decadeAxis("median step (ms)", leastMs, mostMs, "%g");
   chart->addAxis(xAxis, Qt::AlignBottom);
   chart->addAxis(yAxis, Qt::AlignLeft);
   for (QAbstractSeries* one : series) {

@@ -4,9 +4,12 @@
 #include <QChartView>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLogValueAxis>
 #include <QPixmap>
 #include <QVBoxLayout>
 #include <QWidget>
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "registry.h"
@@ -24,6 +27,29 @@ QColor backendColor(std::string_view backend) {
     ++index;
   }
   return kPalette[kColors - 1];
+}
+
+double decadeBelow(double value) {
+  return std::pow(10.0, std::floor(std::log10(value)));
+}
+double decadeAbove(double value) {
+  return std::pow(10.0, std::ceil(std::log10(value)));
+}
+
+QLogValueAxis* decadeAxis(const QString& title, double low, double high, const char* labelFormat) {
+  auto* axis = new QLogValueAxis;
+  axis->setTitleText(title);
+  axis->setLabelFormat(labelFormat);
+  axis->setBase(10.0);
+  const double bottom = decadeBelow(low);
+  const double top = std::max(decadeAbove(high), 10.0 * bottom);
+  axis->setRange(bottom, top);
+  // Minor lines at 2…9 help read a few decades; across many they only add noise.
+  const bool fewDecades = top / bottom <= 1e3;
+  axis->setMinorTickCount(fewDecades ? 8 : 0);
+  axis->setGridLineVisible(true);
+  axis->setMinorGridLineVisible(fewDecades);
+  return axis;
 }
 
 void saveCharts(std::vector<QChart*> charts, const QString& title, int chartWidth, int height,

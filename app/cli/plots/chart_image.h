@@ -7,11 +7,20 @@
 #include <vector>
 
 class QChart;
+class QLogValueAxis;
 
 namespace fooball::plots {
 
 /// The colour each backend has in every chart: the registry's order, FooBall's amber first.
 QColor backendColor(std::string_view backend);
+
+/// The powers of ten just below and just above a positive value.
+double decadeBelow(double value);
+double decadeAbove(double value);
+
+/// A base-10 log axis over whole decades around [low, high] (at least one decade), so the ticks
+/// are 1, 10, 100, …; `labelFormat` is printf-style, e.g. "%g" or "%.0e".
+QLogValueAxis* decadeAxis(const QString& title, double low, double high, const char* labelFormat);
 
 /// Renders `charts` side by side, each `chartWidth` × `height` pixels, under `title`, into a PNG
 /// at `path`. Takes ownership of the charts. Throws std::runtime_error naming the path when the

@@ -24,22 +24,6 @@ struct ErrorAxis {
   QString title;
 };
 
-double decadeBelow(double value) {
-  return std::pow(10.0, std::floor(std::log10(value)));
-}
-double decadeAbove(double value) {
-  return std::pow(10.0, std::ceil(std::log10(value)));
-}
-
-QLogValueAxis* logAxis(const QString& title, double low, double high) {
-  auto* axis = new QLogValueAxis;
-  axis->setTitleText(title);
-  axis->setLabelFormat("%.0e");
-  axis->setBase(10.0);
-  axis->setRange(decadeBelow(low), std::max(decadeAbove(high), 10.0 * decadeBelow(low)));
-  return axis;
-}
-
 /// The backends in the order their points first appear.
 std::vector<std::string> backendsOf(std::span<const measure::TradeoffPoint> points) {
   std::vector<std::string> backends;
@@ -63,15 +47,16 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
     leastCost = std::min(leastCost, point.cpuMsPerSimulatedSecond);
     mostCost = std::max(mostCost, point.cpuMsPerSimulatedSecond);
   }
-  if (!std::isfinite(leastError)) leastError = 1e-16;
+  // Every error zero (an exact method on a simple scene): any decade will do for the bottom row.
+  if (!std::isfinite(leastError)) leastError = 1.0;
   const double zeroAt = decadeBelow(leastError) / 10.0;
   if (!std::isfinite(leastCost)) leastCost = mostCost = 1.0;
   const auto shown = [&](double error) { return error > 0.0 ? error : zeroAt; };
 
   auto* chart = new QChart;
   chart->legend()->setAlignment(Qt::AlignBottom);
-  QLogValueAxis* xAxis = logAxis("CPU ms per simulated second", leastCost, mostCost);
-  QLogValueAxis* yAxis = logAxis(axis.title, zeroAt, std::max(mostError, zeroAt));
+  QLogValueAxis* xAxis = decadeAxis("CPU ms per simulated second", leastCost, mostCost, "%.0e");
+  QLogValueAxis* yAxis = decadeAxis(axis.title, zeroAt, std::max(mostError, zeroAt), "%.0e");
   chart->addAxis(xAxis, Qt::AlignBottom);
   chart->addAxis(yAxis, Qt::AlignLeft);
   const auto add = [&](QAbstractSeries* series, bool inLegend) {
