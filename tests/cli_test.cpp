@@ -394,4 +394,31 @@ TEST_F(CliTest, EveryBackendRunsTheScene) {
   }
 }
 
+TEST_F(CliTest, FailureMapWritesOneCsvRowPerScenePointAndAChart) {
+  const fs::path csv = pathOf("failure-map.csv");
+  const CliResult result =
+      runCli({"failure-map", "--sweep", "mass-ratio", "--backend", "elastic", "--quick", "--csv",
+              csv.string(), "--chart-dir", pathOf("").string()});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_THAT(result.out, HasSubstr("mass-ratio"));
+  const std::vector<std::string> rows = splitLines(readText(csv));
+  ASSERT_GE(rows.size(), 2u);
+  EXPECT_EQ(rows[0],
+            "sweep,backend,variant,parameter_name,parameter,error_name,error,max_overlap,passed");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string> cells = splitCsvRow(rows[i]);
+    ASSERT_EQ(cells.size(), 9u) << rows[i];
+    EXPECT_EQ(cells[0], "mass-ratio");
+    EXPECT_EQ(cells[1], "elastic");
+    // One elastic contact has a closed-form impulse: every mass ratio passes (docs/accuracy.md).
+    EXPECT_EQ(cells[8], "pass") << rows[i];
+  }
+  EXPECT_GT(fs::file_size(pathOf("failure-mass-ratio.png")), 0u);
+}
+
+TEST_F(CliTest, FailureMapUnknownSweepExitsTwoNamingItAndTheKnownSweeps) {
+  EXPECT_THAT(expectBadInput({"failure-map", "--sweep", "wobble"}),
+              AllOf(HasSubstr("wobble"), HasSubstr("tunnelling"), HasSubstr("pile")));
+}
+
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "allocation_counter.h"
@@ -67,9 +68,56 @@ TEST(ElasticThreads, TwoAndThreeWorkersGiveTheOneWorkerTrajectoryBitForBit) {
   expectIdentical(outcomeWith(scene, 3), one);
 }
 
+/// Big balls among small ones (met in a pass of their own, CellLists), with drag. No gravity:
+/// a pile would crowd the cells sized for the small balls' gas and grow the scratch of the pair
+/// search long after the warm-up of StepsWithTwoWorkersDoNotAllocate.
+Scene mixedScene() {
+  Scene scene = testing::bigAmongSmall(20, 3000, 12.0, 30.0);
+  scene.world.airResistance = 0.05;
+  return scene;
+}
+
+TEST(ElasticThreads, WorkersGiveTheSameTrajectoryWithBigBallsAmongSmallOnes) {
+  const Scene scene = mixedScene();
+  const Outcome one = outcomeWith(scene, 1);
+  EXPECT_GT(one.counters.ballCollisions, 1000u);
+  expectIdentical(outcomeWith(scene, 2), one);
+  expectIdentical(outcomeWith(scene, 3), one);
+}
+
 TEST(ElasticThreads, WorkersGiveTheSameTrajectoryWithCollisionsOff) {
   const Scene scene = busyScene(false);
   expectIdentical(outcomeWith(scene, 2), outcomeWith(scene, 1));
+}
+
+/// The most workers the `threads` option allows: many more than the cells of a small grid, so
+/// most workers get no cells of the broadphase to count and sort.
+constexpr int kMostThreads = 64;
+
+TEST(ElasticThreads, MoreWorkersThanCellsRunAnEmptyScene) {
+  // A 1 × 1 m box with no balls has a grid of 1 cell (plus the oversized balls' cell).
+  const Outcome one = outcomeWith(testing::emptyBox(1.0, 1.0), 1);
+  expectIdentical(outcomeWith(testing::emptyBox(1.0, 1.0), kMostThreads), one);
+}
+
+/// Three balls in a 1 × 1 m box under gravity: a grid of a few cells, with wall bounces and
+/// ball collisions.
+Scene tinyScene() {
+  Scene scene = testing::emptyBox(1.0, 1.0);
+  scene.world.gravity = {3.0, -9.81};
+  scene.balls = {testing::ball({0.3, 0.3}, {2.0, 1.0}, 0.1),
+                 testing::ball({0.7, 0.3}, {-2.0, 0.5}, 0.1),
+                 testing::ball({0.5, 0.7}, {0.5, -3.0}, 0.15)};
+  return scene;
+}
+
+TEST(ElasticThreads, MoreWorkersThanCellsGiveTheOneWorkerTrajectoryBitForBit) {
+  const Scene scene = tinyScene();
+  const Outcome one = outcomeWith(scene, 1);
+  EXPECT_GT(one.counters.ballCollisions, 0u);
+  EXPECT_GT(one.counters.wallCollisions, 0u);
+  for (const int threads : {3, 17, kMostThreads})
+    expectIdentical(outcomeWith(scene, threads), one);
 }
 
 TEST(ElasticThreads, ChangingTheWorkerCountMidRunChangesNothing) {
@@ -111,16 +159,21 @@ TEST(ElasticThreads, ReorderingByCellKeepsEveryBallOnce) {
   }
 }
 
-TEST(ElasticThreads, StepsWithTwoWorkersDoNotAllocate) {
-  auto backend = makeElasticBackend();
-  backend->setOption("threads", 2);
-  backend->load(busyScene());
-  for (int step = 0; step < 30; ++step)
-    backend->step(1.0 / 60.0, {});  // warm up: buffers grow to their working size
-  const long before = testing::allocationCount();
-  for (int step = 0; step < 30; ++step)
-    backend->step(1.0 / 60.0, {});
-  EXPECT_EQ(testing::allocationCount() - before, 0);
+TEST(ElasticThreads, StepsWithWorkersDoNotAllocate) {
+  const std::pair<Scene, int> cases[] = {
+      {busyScene(), 2}, {mixedScene(), 2}, {tinyScene(), kMostThreads}};
+  for (const auto& [scene, threads] : cases) {
+    auto backend = makeElasticBackend();
+    backend->setOption("threads", threads);
+    backend->load(scene);
+    for (int step = 0; step < 30; ++step)
+      backend->step(1.0 / 60.0, {});  // warm up: buffers grow to their working size
+    const long before = testing::allocationCount();
+    for (int step = 0; step < 30; ++step)
+      backend->step(1.0 / 60.0, {});
+    EXPECT_EQ(testing::allocationCount() - before, 0)
+        << scene.balls.size() << " balls, " << threads << " threads";
+  }
 }
 
 TEST(ElasticThreads, MemoryIsReportedPerBall) {

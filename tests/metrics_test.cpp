@@ -1,5 +1,5 @@
 // Metrics against hand-computed values. Sums of a handful of terms are exact up to a few
-// roundings, so they are checked to 1e-12 relative; the O(N) overlap search must find the same
+// roundings, so they are checked to 1e-12 relative; the grid overlap search must find the same
 // maximum as brute force, which computes each pair's depth by the same formula, so that
 // comparison is also at rounding.
 
@@ -178,6 +178,27 @@ TEST(Metrics, MaxOverlapAgreesWithBruteForceOnTwoThousandRandomBalls) {
   }
 }
 
+TEST(Metrics, MaxOverlapAgreesWithBruteForceOnADenseGasOfTwoSizes) {
+  // 3,000 balls crowded into 2 m × 2 m (~25 % packing) with radii from 0.01 to 0.02 m, so they
+  // fall into two power-of-two grids that span fewer cells than a few per ball: the search
+  // sorts them by counting cells rather than comparing, and must still see every pair.
+  for (const std::uint64_t seed : {4u, 5u}) {
+    SCOPED_TRACE(seed);
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> coordinate(3.0, 5.0);
+    std::uniform_real_distribution<double> radius(0.01, 0.02);
+    std::vector<Vec2> positions(3000);
+    std::vector<double> radii(3000);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      positions[i] = {coordinate(random), coordinate(random)};
+      radii[i] = radius(random);
+    }
+    const double expected = bruteForceMaxOverlap(positions, radii, kBox, kNoWalls);
+    EXPECT_GT(expected, 0.0);
+    EXPECT_NEAR(maxOverlap(positions, radii, kBox, kNoWalls), expected, kRounding * expected);
+  }
+}
+
 TEST(Metrics, MaxOverlapFindsAShallowOverlapOfTheLargestBallsAnywhere) {
   // The hardest pair for a grid: the two largest balls, barely overlapping (centres 1.9 radii
   // apart), among many small balls that make the grid fine. Slid across the box in steps
@@ -205,6 +226,44 @@ TEST(Metrics, MaxOverlapFindsAShallowOverlapOfTheLargestBallsAnywhere) {
     positions[a] = {x, y};
     positions[b] = positions[a] + 1.9 * radius * direction;
     EXPECT_NEAR(maxOverlap(positions, radii, kBox, kAllWalls), 0.1, 1e-12);
+  }
+}
+
+TEST(Metrics, MaxOverlapFindsASmallBallSunkIntoABigOneAmongManySmallOnes) {
+  // Touching small balls (r 0.04 m) on a lattice, with holes cleared for three big ones (r 0.5
+  // m); one small ball sinks 0.01 m into a big one, a quarter of its radius. A grid sized for
+  // the big balls would hold dozens of small ones per cell; one sized for the small ones would
+  // miss the pair. Slid across the box, the big ball straddles every kind of cell boundary.
+  constexpr double kSmall = 0.04;
+  constexpr double kBig = 0.5;
+  for (int k = 0; k < 30; ++k) {
+    SCOPED_TRACE(k);
+    const std::vector<Vec2> bigCentres = {
+        {2.0 + 0.173 * k, 3.0 + 0.071 * k}, {12.0, 2.0}, {8.0, 7.0 - 0.05 * k}};
+    std::vector<Vec2> positions;
+    std::vector<double> radii;
+    for (int row = 0; row * 2.0 * kSmall < kBox.height - kSmall; ++row) {
+      for (int column = 0; column * 2.0 * kSmall < kBox.width - kSmall; ++column) {
+        const Vec2 p{kSmall + 2.0 * kSmall * column, kSmall + 2.0 * kSmall * row};
+        // Clear of the big ball and of the small ball sunk into it (0.53 m from its centre).
+        const auto clear = [&](Vec2 c) { return length(p - c) > kBig + 4.0 * kSmall; };
+        if (std::all_of(bigCentres.begin(), bigCentres.end(), clear)) {
+          positions.push_back(p);
+          radii.push_back(kSmall);
+        }
+      }
+    }
+    for (const Vec2 centre : bigCentres) {
+      positions.push_back(centre);
+      radii.push_back(kBig);
+    }
+    const double angle = 0.37 * k;
+    positions.push_back(bigCentres[0] +
+                        (kBig + kSmall - 0.01) * Vec2{std::cos(angle), std::sin(angle)});
+    radii.push_back(kSmall);
+    ASSERT_GT(positions.size(), 15'000u);
+    // The lattice's touching pairs overlap by rounding at most (1e-16 m of 0.04 m).
+    EXPECT_NEAR(maxOverlap(positions, radii, kBox, kNoWalls), 0.01 / kSmall, 1e-12);
   }
 }
 

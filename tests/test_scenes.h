@@ -44,4 +44,21 @@ inline Scene gas(std::size_t count, std::uint64_t seed = 7, double width = 16.0,
   return scene;
 }
 
+/// `bigCount` balls of radius 1 m, then `smallCount` of radius 0.04–0.06 m, all at 0.5–3 m/s,
+/// in a `width` × `height` box: a few balls far too big for cells that fit the small ones.
+inline Scene bigAmongSmall(std::size_t bigCount, std::size_t smallCount, double width,
+                           double height, std::uint64_t seed = 11) {
+  Scene scene = emptyBox(width, height);
+  RandomBalls spec;
+  spec.count = bigCount;
+  spec.minRadius = spec.maxRadius = 1.0;
+  spec.seed = seed;
+  addRandomBalls(scene, spec);
+  spec.count = smallCount;
+  spec.minRadius = 0.04;
+  spec.maxRadius = 0.06;
+  addRandomBalls(scene, spec);
+  return scene;
+}
+
 }  // namespace fooball::testing

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "capacity_command.h"
+#include "failure_map_command.h"
 #include "fooball/scene_error.h"
 #include "list_command.h"
 #include "run_command.h"
@@ -174,6 +175,41 @@ void readTradeoffFlags(const TradeoffFlags& flags, TradeoffOptions& options) {
   if (flags.chartFlag->count() > 0) options.chartPath = flags.chartPath;
 }
 
+/// Declares `failure-map`'s flags; the optional paths are read back by readFailureMapFlags.
+struct FailureMapFlags {
+  std::string csvPath;
+  std::string chartDir;
+  CLI::Option* csvFlag = nullptr;
+  CLI::Option* chartDirFlag = nullptr;
+};
+
+void addFailureMapFlags(CLI::App& failureMap, FailureMapOptions& options, FailureMapFlags& flags) {
+  failureMap
+      .add_option("--backend", options.backends, "backend to sweep (repeatable; default all)")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
+  failureMap
+      .add_option("--sweep", options.sweeps,
+                  "sweep to run (repeatable; default all): tunnelling, mass-ratio, cradle, "
+                  "packing, scale, pile")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
+  flags.csvFlag =
+      failureMap.add_option("--csv", flags.csvPath, "write one row per scene of every sweep")
+          ->type_name("FILE");
+  flags.chartDirFlag =
+      failureMap
+          .add_option("--chart-dir", flags.chartDir, "draw failure-<sweep>.png into this directory")
+          ->type_name("DIR");
+  failureMap.add_flag("--quick", options.quick, "coarser grids and shorter scenes");
+  failureMap.add_flag("--quiet", options.quiet, "print no table and no progress");
+}
+
+void readFailureMapFlags(const FailureMapFlags& flags, FailureMapOptions& options) {
+  if (flags.csvFlag->count() > 0) options.csvPath = flags.csvPath;
+  if (flags.chartDirFlag->count() > 0) options.chartDir = flags.chartDir;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -187,6 +223,8 @@ int main(int argc, char** argv) {
       "capacity", "find how many balls each backend steps within a frame budget");
   CLI::App* tradeoff =
       app.add_subcommand("tradeoff", "measure each backend's cost against its errors");
+  CLI::App* failureMap = app.add_subcommand(
+      "failure-map", "find where each backend starts to fail (docs/accuracy.md)");
 
   RunOptions runOptions;
   RunFlags runFlags;
@@ -197,6 +235,9 @@ int main(int argc, char** argv) {
   TradeoffOptions tradeoffOptions;
   TradeoffFlags tradeoffFlags;
   addTradeoffFlags(*tradeoff, tradeoffOptions, tradeoffFlags);
+  FailureMapOptions failureMapOptions;
+  FailureMapFlags failureMapFlags;
+  addFailureMapFlags(*failureMap, failureMapOptions, failureMapFlags);
 
   try {
     app.parse(argc, argv);
@@ -214,6 +255,9 @@ int main(int argc, char** argv) {
     } else if (capacity->parsed()) {
       readCapacityFlags(capacityFlags, capacityOptions);
       capacityCommand(capacityOptions, std::cout);
+    } else if (failureMap->parsed()) {
+      readFailureMapFlags(failureMapFlags, failureMapOptions);
+      failureMapCommand(failureMapOptions, std::cout);
     } else if (tradeoff->parsed()) {
       readTradeoffFlags(tradeoffFlags, tradeoffOptions);
       tradeoffCommand(tradeoffOptions, std::cout);

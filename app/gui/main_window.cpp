@@ -22,6 +22,7 @@
 
 #include "backend_options_form.h"
 #include "ball_inspector.h"
+#include "benchmark_dialog.h"
 #include "charts/chart_panel.h"
 #include "compare_readout.h"
 #include "fooball/presets.h"
@@ -128,7 +129,8 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
 
 MainWindow::~MainWindow() {
   // The widgets go first: they refer to the runs, and a field losing focus as it is destroyed
-  // still reports an edit.
+  // still reports an edit. The benchmark first of all: it stops and joins its thread.
+  delete benchmark_;
   delete sidebarDock_;
   delete chartsDock_;
   delete takeCentralWidget();
@@ -253,13 +255,18 @@ void MainWindow::createMenus() {
   viewMenu->addAction(overlayAction_);
   viewMenu->addAction(sideBySideAction_);
 
+  QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+  benchmarkAction_ = tools->addAction(tr("&Benchmark…"), this, &MainWindow::openBenchmark);
+  benchmarkAction_->setToolTip(
+      tr("Measure how many balls each backend steps within a time budget (fooball-cli capacity)"));
+
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&Mouse and keys"), QKeySequence::HelpContents, this,
                   [this] { showMouseAndKeys(this); });
   help->addAction(tr("&About FooBall"), this, [this] { showAbout(this); });
   help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 
-  for (QMenu* menu : {file, simulation, viewMenu, help})
+  for (QMenu* menu : {file, simulation, viewMenu, tools, help})
     menu->setToolTipsVisible(true);
 }
 
@@ -695,6 +702,25 @@ void MainWindow::exportChartsCsv() {
   }
 }
 
+void MainWindow::openBenchmark() {
+  if (!benchmark_) {
+    benchmark_ = new BenchmarkDialog(this);
+    // The measurements and the simulation would share the CPU: the runs pause meanwhile.
+    connect(benchmark_, &BenchmarkDialog::runStarted, this, [this] {
+      pausedForBenchmark_ = !runs_->paused();
+      if (pausedForBenchmark_) runs_->setPaused(true);
+      showStatus(tr("Paused while the benchmark runs"));
+    });
+    connect(benchmark_, &BenchmarkDialog::runFinished, this, [this] {
+      if (pausedForBenchmark_) runs_->setPaused(false);
+      pausedForBenchmark_ = false;
+    });
+  }
+  benchmark_->show();
+  benchmark_->raise();
+  benchmark_->activateWindow();
+}
+
 void MainWindow::readSettings() {
   QSettings settings;
   restoreGeometry(settings.value("window/geometry").toByteArray());
@@ -747,6 +773,7 @@ void MainWindow::showEvent(QShowEvent* event) {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   if (rememberSettings_) writeSettings();
+  if (benchmark_) benchmark_->close();  // cancels a run: the app quits with its main window
   event->accept();
 }
 

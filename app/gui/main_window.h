@@ -18,6 +18,7 @@ class QTimer;
 
 namespace fooball::gui {
 
+class BenchmarkDialog;
 class ChartPanel;
 class CompareReadout;
 class RunController;
@@ -57,6 +58,9 @@ class MainWindow : public QMainWindow {
   SettingsSidebar* sidebar() const { return sidebar_; }
   ChartPanel* charts() const { return charts_; }
   CompareReadout* compareReadout() const { return compareReadout_; }
+  QAction* benchmarkAction() const { return benchmarkAction_; }
+  /// Tools → Benchmark's dialog; none until first opened.
+  BenchmarkDialog* benchmarkDialog() const { return benchmark_; }
 
   /// How errors reach the user: a message box by default; tests record them instead.
   using ErrorReporter = std::function<void(const QString& title, const QString& message)>;
@@ -111,6 +115,7 @@ class MainWindow : public QMainWindow {
   void saveSceneDialog();
   void exportChartsPng();
   void exportChartsCsv();
+  void openBenchmark();
 
   void readSettings();
   void writeSettings() const;
@@ -138,6 +143,10 @@ class MainWindow : public QMainWindow {
   QAction* centreOfMassAction_ = nullptr;
   QAction* overlayAction_ = nullptr;
   QAction* sideBySideAction_ = nullptr;
+  QAction* benchmarkAction_ = nullptr;
+
+  BenchmarkDialog* benchmark_ = nullptr;
+  bool pausedForBenchmark_ = false;  ///< the benchmark paused the runs and continues them
 
   QLabel* cursorStatus_ = nullptr;
   QLabel* backendStatus_ = nullptr;

@@ -6,6 +6,7 @@
 #include <future>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include "fooball/metrics.h"
@@ -38,6 +39,7 @@ RunController::RunController(const Scene& scene, const QString& backendName, QOb
   main_ = makeRun(scene, backendName);
   backendNames_[kMainRun] = backendName;
   adoptColours();
+  shareCores();
 }
 
 RunController::~RunController() = default;
@@ -101,11 +103,25 @@ void RunController::setBackend(int index, const QString& name) {
   const int target = index == kCompareRun && compare_ ? kCompareRun : kMainRun;
   runAt(target).setBackend(createBackend(name.toStdString()));
   backendNames_[static_cast<std::size_t>(target)] = name;
+  shareCores();
   emit runsChanged();
 }
 
 void RunController::setBackendOption(int index, const QString& name, double value) {
   runAt(index).backend().setOption(name.toStdString(), value);
+}
+
+void RunController::shareCores() {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int perRun = std::max(1, cores / runCount());
+  forEachRun([&](Simulation& run) {
+    Backend& backend = run.backend();
+    const auto specs = backend.options().specs();
+    const auto threads = std::find_if(
+        specs.begin(), specs.end(), [](const OptionSpec& spec) { return spec.name == "threads"; });
+    if (threads != specs.end())
+      backend.setOption(threads->name, std::clamp(double(perRun), threads->min, threads->max));
+  });
 }
 
 void RunController::copyToolsTo(Simulation& run) const {
@@ -128,6 +144,7 @@ void RunController::startCompare(const QString& name) {
   restoreSelection();
   backendNames_[kCompareRun] = name;
   timing_[kCompareRun] = {};
+  shareCores();
   emit runsChanged();
 }
 
@@ -135,6 +152,7 @@ void RunController::stopCompare() {
   if (!compare_) return;
   compare_.reset();
   backendNames_[kCompareRun].clear();
+  shareCores();
   emit runsChanged();
 }
 

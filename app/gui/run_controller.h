@@ -124,6 +124,10 @@ class RunController : public QObject {
   std::unique_ptr<Simulation> makeRun(const Scene& scene, const QString& backendName) const;
   Simulation& runAt(int index) { return index == kCompareRun && compare_ ? *compare_ : *main_; }
   void copyToolsTo(Simulation& run) const;
+  /// Backends with a `threads` option (elastic) get the machine's cores, shared between the
+  /// runs: this thread waits for the step anyway, and the results are the same for any count.
+  /// Set again whenever a backend or the number of runs changes.
+  void shareCores();
   /// `count` balls clear of every ball in `room`.
   std::vector<BallDef> placeNewBalls(const Scene& room, std::size_t count, std::uint64_t seed);
   void adoptColours();

@@ -9,7 +9,8 @@
 
 namespace fooball::box2d_detail {
 
-/// The walls that are on, as static Box2D bodies: one thick box per side, lying outside the box.
+/// The walls that are on, as static Box2D bodies: one per side, a thick slab lying outside the box
+/// cut into square pieces (one fixture each).
 /// Walls that are off do not exist, so Box2D does no work for them.
 class WallBodies {
  public:

@@ -24,11 +24,16 @@ void CellLists::layout(std::size_t ballCount, double width, double height, doubl
   columns_ = std::max(1, static_cast<int>(std::min(width / cellSize, maxCells)));
   rows_ = std::max(1, static_cast<int>(std::min(height / cellSize, maxCells)));
   inverseCellSize_ = 1.0 / cellSize;
+  oversizedRadius_ = 0.5 * cellSize;
 
-  const std::size_t cellCount = static_cast<std::size_t>(columns_) * rows_;
+  // The grid's cells and the oversized balls' cell.
+  const std::size_t cellCount = static_cast<std::size_t>(columns_) * rows_ + 1;
   resizeExactly(cellStart_, cellCount + 1);
   resizeExactly(cellOfSlot_, ballCount);
   resizeExactly(sortedSlots_, ballCount + kReadPastEnd);
+  // The entries past the end are read (see slotsIn) and used as slots by prefetches: keep them
+  // valid slots rather than those of a larger scene before.
+  std::fill(sortedSlots_.begin() + static_cast<std::ptrdiff_t>(ballCount), sortedSlots_.end(), 0u);
   shares_.resize(static_cast<std::size_t>(workers));
   for (int worker = 0; worker < workers; ++worker) {
     const Share cells = shareOf(cellCount, worker, workers);
@@ -57,6 +62,9 @@ void CellLists::countShare(int worker) {
 
 void CellLists::sortShare(int worker) {
   const CellShare& share = shares_[worker];
+  // A team larger than the grid leaves some workers no cells (and the shift below assumes at
+  // least one).
+  if (share.endCell == share.firstCell) return;
   std::uint32_t start = 0;  // balls in the shares before this one
   for (int before = 0; before < worker; ++before)
     start += shares_[before].ballCount;
@@ -76,7 +84,7 @@ void CellLists::sortShare(int worker) {
   // Each cursor stopped at the next cell's start: shift back by one cell.
   for (std::uint32_t cell = share.endCell - 1; cell > share.firstCell; --cell)
     cursor[cell] = cursor[cell - 1];
-  if (share.endCell > share.firstCell) cursor[share.firstCell] = start - share.ballCount;
+  cursor[share.firstCell] = start - share.ballCount;
 }
 
 std::size_t CellLists::memoryBytes() const {

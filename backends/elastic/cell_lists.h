@@ -7,8 +7,11 @@
 namespace fooball::elastic {
 
 /// The broadphase: a uniform grid over the box, and the balls' slots sorted by cell (a counting
-/// sort, O(N), rebuilt every substep). Cells are at least one largest diameter wide, so a ball's
-/// neighbours are in its own and the 8 adjacent cells.
+/// sort, O(N), rebuilt every substep). Cells are at least one diameter of the balls they hold
+/// wide, so such a ball's neighbours are in its own and the 8 adjacent cells. Balls too big for
+/// that ("oversized": radius above half a cell) go to one extra cell after the grid's, and are
+/// met by a pass of their own (collideOversized): a grid sized for a few big balls would crowd
+/// dozens of small ones into every cell.
 ///
 /// Built in phases that a team of workers shares: each worker computes the cells of its own
 /// balls (setCell), then counts, prefix-sums and scatters the balls of its own share of the cells.
@@ -20,11 +23,14 @@ namespace fooball::elastic {
 class CellLists {
  public:
   /// Sizes the grid for `ballCount` balls in [0,width] × [0,height] (m), cells at least
-  /// `minCellSize` (m) wide, and splits the cells into `workers` contiguous shares.
+  /// `minCellSize` (m) wide, and splits the cells into `workers` contiguous shares (some empty
+  /// when the workers outnumber the cells).
   void layout(std::size_t ballCount, double width, double height, double minCellSize, int workers);
 
   int columns() const { return columns_; }
   int rows() const { return rows_; }
+  /// Balls with a larger radius (m) are oversized: half the cell size.
+  double oversizedRadius() const { return oversizedRadius_; }
 
   /// The cell holding (x, y) (m). Points outside the box are clamped into the border cells, so
   /// every ball is found; NaN goes to cell 0 rather than to undefined behaviour.
@@ -34,6 +40,11 @@ class CellLists {
     const int column = fx > 0.0 ? (fx < columns_ ? static_cast<int>(fx) : columns_ - 1) : 0;
     const int row = fy > 0.0 ? (fy < rows_ ? static_cast<int>(fy) : rows_ - 1) : 0;
     return static_cast<std::uint32_t>(row * columns_ + column);
+  }
+  /// The cell of a ball centred at (x, y) with radius `radius` (m): the extra cell after the
+  /// grid's if it is oversized.
+  std::uint32_t cellOf(double x, double y, double radius) const {
+    return radius > oversizedRadius_ ? oversizedCell() : cellAt(x, y);
   }
   void setCell(std::size_t slot, std::uint32_t cell) { cellOfSlot_[slot] = cell; }
 
@@ -48,6 +59,11 @@ class CellLists {
   /// may be read after any range (their values mean nothing), for copies of a fixed size.
   std::span<const std::uint32_t> slotsIn(int firstCell, int endCell) const {
     return {sortedSlots_.data() + cellStart_[firstCell], sortedSlots_.data() + cellStart_[endCell]};
+  }
+  /// Slots of the oversized balls, ascending.
+  std::span<const std::uint32_t> oversizedSlots() const {
+    const int cell = static_cast<int>(oversizedCell());
+    return slotsIn(cell, cell + 1);
   }
   /// Where the slots of cell `cell` begin (kReadPastEnd entries may be read from there).
   const std::uint32_t* slotsFrom(int cell) const { return sortedSlots_.data() + cellStart_[cell]; }
@@ -72,12 +88,15 @@ class CellLists {
     std::uint32_t ballCount;  ///< set by countShare
   };
 
+  std::uint32_t oversizedCell() const { return static_cast<std::uint32_t>(columns_ * rows_); }
+
   int columns_ = 1;
   int rows_ = 1;
   double inverseCellSize_ = 1.0;  ///< 1/m
+  double oversizedRadius_ = 0.5;  ///< m
   std::vector<std::uint32_t> cellOfSlot_;
   std::vector<std::uint32_t> sortedSlots_;
-  std::vector<std::uint32_t> cellStart_;  ///< cells + 1 prefix sums
+  std::vector<std::uint32_t> cellStart_;  ///< prefix sums: grid cells + the oversized cell + 1
   std::vector<CellShare> shares_;
 };
 

@@ -73,7 +73,7 @@ class ElasticWorld::StepJob {
       loop([&](Ball& ball, std::size_t slot) {
         if constexpr (walls) wallBounce.bounce(ball, wallTally);
         if constexpr (fly) dragLoss += flight.fly(ball);
-        if constexpr (findCells) cells.setCell(slot, cells.cellAt(ball.x, ball.y));
+        if constexpr (findCells) cells.setCell(slot, cells.cellOf(ball.x, ball.y, ball.radius));
       });
       tally.dragLoss += dragLoss;
       tally.wallBounces += wallTally.bounces;
@@ -116,6 +116,18 @@ class ElasticWorld::StepJob {
     });
   }
 
+  /// The oversized balls' pairs, then `parts` for the oversized balls: no pair of the bands
+  /// touches them.
+  void collideOversized(BallWorkParts parts) {
+    w_.workers_[0].impulses +=
+        elastic::collideOversized(w_.balls_.ball, w_.cells_, w_.oversizedSweep_);
+    std::vector<Ball>& balls = w_.balls_.ball;
+    withBallWork(parts, w_.oversizedTally_, [&](auto&& work) {
+      for (const std::uint32_t slot : w_.cells_.oversizedSlots())
+        work(balls[slot], slot);
+    });
+  }
+
   /// The pair search of one substep, finishing every ball with `parts` on the way.
   void collide(int worker, int substep, BallWorkParts parts) {
     WorkerTeam& team = *w_.team_;
@@ -128,10 +140,15 @@ class ElasticWorld::StepJob {
     team.sync();
     w_.cells_.sortShare(worker);
     team.sync();
-    if ((w_.substepsSinceReorder_ + substep + 1) % kSubstepsPerReorder == 0) {
-      // Move the balls into cell order: the sorted slots become the identity, so the pair
-      // pass walks memory sequentially.
-      if (worker == 0) w_.balls_.permute(w_.cells_.sortedSlots(), w_.cells_.cellsBySlot());
+    const bool reorder = (w_.substepsSinceReorder_ + substep + 1) % kSubstepsPerReorder == 0;
+    const bool oversized = !w_.oversizedSweep_.empty();
+    if (reorder || oversized) {
+      if (worker == 0) {
+        // Move the balls into cell order: the sorted slots become the identity, so the pair
+        // pass walks memory sequentially.
+        if (reorder) w_.balls_.permute(w_.cells_.sortedSlots(), w_.cells_.cellsBySlot());
+        if (oversized) collideOversized(parts);
+      }
       team.sync();
     }
     collideBands(worker, 0, w_.nextEvenBand_, parts);
@@ -170,14 +187,15 @@ void ElasticWorld::step(double dt, std::span<const Vec2> forces) {
   StepJob job(*this, dt / substeps_);
   team_->run(job);
   substepsSinceReorder_ = (substepsSinceReorder_ + substeps_) % kSubstepsPerReorder;
-  for (auto* tallies : {&chunkTallies_, &bandTallies_}) {
-    for (ChunkTally& tally : *tallies) {
-      counters_.dragLoss += tally.dragLoss;
-      counters_.wallCollisions += tally.wallBounces;
-      counters_.wallImpulse += tally.wallImpulse;
-      tally = {};
-    }
-  }
+  const auto addTally = [&](ChunkTally& tally) {
+    counters_.dragLoss += tally.dragLoss;
+    counters_.wallCollisions += tally.wallBounces;
+    counters_.wallImpulse += tally.wallImpulse;
+    tally = {};
+  };
+  for (auto* tallies : {&chunkTallies_, &bandTallies_})
+    std::for_each(tallies->begin(), tallies->end(), addTally);
+  addTally(oversizedTally_);
   for (WorkerState& worker : workers_) {
     counters_.ballCollisions += worker.impulses;
     worker.impulses = 0;

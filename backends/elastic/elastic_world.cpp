@@ -40,13 +40,35 @@ std::size_t chunkCount(std::size_t balls) {
   return (balls + ElasticWorld::kBallsPerChunk - 1) / ElasticWorld::kBallsPerChunk;
 }
 
+/// The radius (m) the grid's cells are sized for: the largest, unless at most one ball in
+/// `ballsPerOversized` is more than twice as big as the rest — a few big balls among many small
+/// ones. Those are then left out of the grid (oversized), and the cells fit the small balls.
+double gridRadius(std::span<const Ball> balls, std::size_t ballsPerOversized) {
+  if (balls.empty()) return 1.0;
+  double largest = 0.0;
+  for (const Ball& ball : balls)
+    largest = std::max(largest, ball.radius);
+  const std::size_t oversized = balls.size() / ballsPerOversized;  // at most
+  if (oversized == 0) return largest;
+  std::vector<double> radii(balls.size());
+  std::transform(balls.begin(), balls.end(), radii.begin(),
+                 [](const Ball& ball) { return ball.radius; });
+  // The radius that `oversized` balls at most exceed.
+  const auto typical = radii.end() - 1 - static_cast<std::ptrdiff_t>(oversized);
+  std::nth_element(radii.begin(), typical, radii.end());
+  return *typical < 0.5 * largest ? *typical : largest;
+}
+
 }  // namespace
 
 void ElasticWorld::layout() {
-  double largestRadius = balls_.size() == 0 ? 1.0 : 0.0;  // m
-  for (const Ball& ball : balls_.ball)
-    largestRadius = std::max(largestRadius, ball.radius);
-  cells_.layout(balls_.size(), box_.width, box_.height, 2.0 * largestRadius, team_->size());
+  cells_.layout(balls_.size(), box_.width, box_.height,
+                2.0 * gridRadius(balls_.ball, kBallsPerOversized), team_->size());
+  const auto oversized =
+      std::count_if(balls_.ball.begin(), balls_.ball.end(),
+                    [&](const Ball& ball) { return ball.radius > cells_.oversizedRadius(); });
+  oversizedSweep_.resize(static_cast<std::size_t>(oversized));
+  oversizedSweep_.shrink_to_fit();
   rowsPerBand_ = std::max(1, (cells_.rows() + kMaxBands - 1) / kMaxBands);
   bandTallies_.resize(static_cast<std::size_t>((cells_.rows() + rowsPerBand_ - 1) / rowsPerBand_));
   chunkTallies_.resize(chunkCount(balls_.size()));
@@ -65,6 +87,7 @@ void ElasticWorld::applyKicks(double dt, std::span<const Vec2> forces) {
 std::size_t ElasticWorld::memoryBytes() const {
   return balls_.memoryBytes() + cells_.memoryBytes() +
          (chunkTallies_.capacity() + bandTallies_.capacity()) * sizeof(ChunkTally) +
+         oversizedSweep_.capacity() * sizeof(SweepEntry) +
          std::accumulate(workers_.begin(), workers_.end(), std::size_t{0},
                          [](std::size_t sum, const WorkerState& worker) {
                            return sum + worker.neighbours.memoryBytes();

@@ -25,8 +25,9 @@ namespace fooball::elastic {
 /// number of workers: pairs are resolved in bands of grid rows (fixed by the grid, not by the
 /// team), first the even bands side by side, then the odd ones. Two bands of a colour never
 /// touch the same ball, and within a band the order is fixed, so who does which band does not
-/// matter. Sums (drag loss, wall impulse) are kept per fixed chunk of balls or per band and
-/// added in that order.
+/// matter. The few balls too big for the grid's cells (CellLists) are met first, by one worker.
+/// Sums (drag loss, wall impulse) are kept per fixed chunk of balls or per band and added in
+/// that order.
 class ElasticWorld {
  public:
   ElasticWorld();
@@ -56,6 +57,10 @@ class ElasticWorld {
   /// Row bands per grid, at most: enough that two workers of a colour phase stay busy, few
   /// enough that each band is many rows tall and the rows two bands share are few.
   static constexpr int kMaxBands = 64;
+
+  /// At most one ball in this many is left out of the grid as oversized: a few big balls are
+  /// cheap to meet one by one, many are not.
+  static constexpr std::size_t kBallsPerOversized = 64;
 
   /// Balls are re-sorted by cell every this many substeps: often enough that neighbours stay
   /// close in memory, rarely enough that the move costs little next to the collision pass.
@@ -91,6 +96,8 @@ class ElasticWorld {
   int rowsPerBand_ = 1;
   std::vector<ChunkTally> chunkTallies_;
   std::vector<ChunkTally> bandTallies_;
+  ChunkTally oversizedTally_;
+  std::vector<SweepEntry> oversizedSweep_;  ///< one per oversized ball
   std::vector<WorkerState> workers_;
   std::atomic<int> nextEvenBand_{0};
   std::atomic<int> nextOddBand_{0};

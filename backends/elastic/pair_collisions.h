@@ -59,4 +59,20 @@ class NeighbourSlots {
 std::uint64_t collideRows(std::span<Ball> balls, const CellLists& cells, int firstRow, int endRow,
                           NeighbourSlots& neighbours);
 
+/// An oversized ball's extent along x (m) when collideOversized begins, for its sweep.
+struct SweepEntry {
+  double left;
+  double right;
+  std::uint32_t slot;
+};
+
+/// Resolves every overlapping pair with an oversized ball of `cells` (built on the balls'
+/// current centres), as collideRows does: the oversized balls in order of their left edges,
+/// each against the grid's balls in the cells its reach covers, then against the later
+/// oversized balls that it meets along x (a sweep, so a few hundred big balls cost no
+/// quadratic pass). Touches any ball: run it while no other worker touches balls.
+/// `sweep` is scratch with one entry per oversized ball. Returns the impulses exchanged.
+std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells,
+                               std::span<SweepEntry> sweep);
+
 }  // namespace fooball::elastic

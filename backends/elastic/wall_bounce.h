@@ -13,10 +13,13 @@ struct WallTally {
   double impulse = 0.0;  ///< N·s, Σ|Δp|
 };
 
-/// Reflects a ball that has crossed a wall that is on. The position is mirrored back into the
-/// box (exact for straight flight), and the outgoing normal speed is chosen so the mirror does
-/// not change the energy under gravity: ½v'² = ½v² + (g·n)·2δ, where δ is the penetration. A
-/// plain mirror would gain m·g·2δ on every floor bounce, and a ball would bounce ever higher.
+/// Reflects a ball that has crossed a wall that is on, exactly under constant gravity: the time
+/// since it crossed comes from the quadratic of its flight, and it is reflected there and flown
+/// back to now (through as many bounces as fit, off either wall of the axis). So the energy along
+/// each axis, ½v² − g·p, is kept to rounding in any direction of gravity. (A mirror of the
+/// overshoot with the speed set to keep the energy puts a slow ball higher than its energy
+/// reaches, and then gains energy.) Drag is left out of the time since the crossing: at most one
+/// substep, in which drag changes the speed by a fraction c·h.
 class WallBounce {
  public:
   WallBounce(const Box& box, const Walls& walls, Vec2 gravity)

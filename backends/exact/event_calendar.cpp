@@ -7,21 +7,28 @@ namespace fooball::exact {
 namespace {
 
 constexpr std::size_t kArity = 4;
+constexpr std::size_t kCacheLine = 64;  // bytes
 
 }  // namespace
 
 void EventCalendar::reset(std::size_t ballCount) {
-  heap_.resize(ballCount);
+  constexpr std::size_t kEntriesPerLine = kCacheLine / sizeof(Entry);
+  storage_.resize(ballCount + kEntriesPerLine - 1);
+  // Entry 1 (the first child of the root, and with it every family) starts a cache line.
+  const auto lineOffset = reinterpret_cast<std::uintptr_t>(storage_.data() + 1) % kCacheLine;
+  skew_ = (kEntriesPerLine - lineOffset / sizeof(Entry)) % kEntriesPerLine;
+  size_ = ballCount;
   heapPosition_.resize(ballCount);
+  Entry* entries = heap();
   for (std::size_t ball = 0; ball < ballCount; ++ball) {
-    heap_[ball] = {std::numeric_limits<double>::infinity(), static_cast<std::uint32_t>(ball)};
+    entries[ball] = {std::numeric_limits<double>::infinity(), static_cast<std::uint32_t>(ball)};
     heapPosition_[ball] = static_cast<std::uint32_t>(ball);
   }
 }
 
 void EventCalendar::set(std::uint32_t ball, double time) {
   const std::size_t position = heapPosition_[ball];
-  const double previous = heap_[position].time;
+  const double previous = heap()[position].time;
   if (time < previous) {
     siftUp(position, {time, ball});
   } else if (time > previous) {
@@ -30,46 +37,54 @@ void EventCalendar::set(std::uint32_t ball, double time) {
 }
 
 void EventCalendar::shiftOrigin(double offset) {
-  for (Entry& entry : heap_)
-    entry.time -= offset;
+  Entry* entries = heap();
+  for (std::size_t position = 0; position < size_; ++position)
+    entries[position].time -= offset;
 }
 
 void EventCalendar::place(std::size_t position, const Entry& entry) {
-  heap_[position] = entry;
+  heap()[position] = entry;
   heapPosition_[entry.ball] = static_cast<std::uint32_t>(position);
 }
 
 void EventCalendar::siftUp(std::size_t position, const Entry& entry) {
+  const Entry* entries = heap();
   while (position > 0) {
     const std::size_t parent = (position - 1) / kArity;
-    if (!(entry.time < heap_[parent].time)) break;
-    place(position, heap_[parent]);
+    if (!(entry.time < entries[parent].time)) break;
+    place(position, entries[parent]);
     position = parent;
   }
   place(position, entry);
 }
 
+/// Floyd's variant: the hole at `position` first sinks to the bottom along the earliest children,
+/// without comparing against the entry, then the entry rises from there. A rescheduled ball's new
+/// time usually belongs near the bottom (most entries are there), so this saves the per-level
+/// comparison with the entry and its unpredictable branch. The entry cannot rise above
+/// `position`: everything above it is earlier than its old time, hence than the new one.
 void EventCalendar::siftDown(std::size_t position, const Entry& entry) {
-  const std::size_t size = heap_.size();
+  const Entry* entries = heap();
   while (true) {
     const std::size_t first = kArity * position + 1;
-    if (first >= size) break;
     std::size_t earliest = first;
-    if (first + kArity <= size) {  // a full family: a tournament of selects, no branches
-      const std::size_t left = heap_[first + 1].time < heap_[first].time ? first + 1 : first;
-      const std::size_t right =
-          heap_[first + 3].time < heap_[first + 2].time ? first + 3 : first + 2;
-      earliest = heap_[right].time < heap_[left].time ? right : left;
-    } else {
-      for (std::size_t child = first + 1; child < size; ++child) {
-        if (heap_[child].time < heap_[earliest].time) earliest = child;
+    if (first + kArity <= size_) {  // a full family: a tournament decided by arithmetic, no jumps
+      const Entry* child = entries + first;
+      const auto left = static_cast<std::size_t>(child[1].time < child[0].time);
+      const std::size_t right = 2 + static_cast<std::size_t>(child[3].time < child[2].time);
+      const auto rightWins = static_cast<std::size_t>(child[right].time < child[left].time);
+      earliest = first + left + (right - left) * rightWins;
+    } else if (first < size_) {
+      for (std::size_t other = first + 1; other < size_; ++other) {
+        if (entries[other].time < entries[earliest].time) earliest = other;
       }
+    } else {
+      break;
     }
-    if (!(heap_[earliest].time < entry.time)) break;
-    place(position, heap_[earliest]);
+    place(position, entries[earliest]);
     position = earliest;
   }
-  place(position, entry);
+  siftUp(position, entry);
 }
 
 }  // namespace fooball::exact

@@ -23,16 +23,13 @@ void EventCells::configure(double width, double height, double minCellSize, std:
   rows_ = static_cast<int>(std::max(1.0, std::floor(height / side)));
   cellSide_[0] = width / columns_;
   cellSide_[1] = height / rows_;
-  head_.assign(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_), kNone);
-  next_.assign(ballCount, kNone);
-  previous_.assign(ballCount, kNone);
-  column_.assign(ballCount, 0);
-  row_.assign(ballCount, 0);
+  head_.assign(static_cast<std::size_t>(columns_ + 2) * static_cast<std::size_t>(rows_ + 2), kNone);
+  members_.assign(ballCount, Membership{});
 }
 
 void EventCells::insert(std::uint32_t ball, Vec2 position) {
-  column_[ball] = clampedIndex(position.x, cellSide_[0], columns_);
-  row_[ball] = clampedIndex(position.y, cellSide_[1], rows_);
+  members_[ball].column = clampedIndex(position.x, cellSide_[0], columns_);
+  members_[ball].row = clampedIndex(position.y, cellSide_[1], rows_);
   link(ball);
 }
 
@@ -40,28 +37,30 @@ void EventCells::cross(std::uint32_t ball, Side side) {
   unlink(ball);
   const int step = isLowerSide(side) ? -1 : 1;
   if (axisOf(side) == 0) {
-    column_[ball] += step;
+    members_[ball].column += step;
   } else {
-    row_[ball] += step;
+    members_[ball].row += step;
   }
   link(ball);
 }
 
 void EventCells::link(std::uint32_t ball) {
-  std::uint32_t& head = head_[row_[ball] * columns_ + column_[ball]];
-  previous_[ball] = kNone;
-  next_[ball] = head;
-  if (head != kNone) previous_[head] = ball;
+  Membership& member = members_[ball];
+  std::uint32_t& head = head_[cellIndex(member.column, member.row)];
+  member.previous = kNone;
+  member.next = head;
+  if (head != kNone) members_[head].previous = ball;
   head = ball;
 }
 
 void EventCells::unlink(std::uint32_t ball) {
-  if (previous_[ball] != kNone) {
-    next_[previous_[ball]] = next_[ball];
+  const Membership& member = members_[ball];
+  if (member.previous != kNone) {
+    members_[member.previous].next = member.next;
   } else {
-    head_[row_[ball] * columns_ + column_[ball]] = next_[ball];
+    head_[cellIndex(member.column, member.row)] = member.next;
   }
-  if (next_[ball] != kNone) previous_[next_[ball]] = previous_[ball];
+  if (member.next != kNone) members_[member.next].previous = member.previous;
 }
 
 }  // namespace fooball::exact

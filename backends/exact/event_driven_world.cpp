@@ -1,6 +1,7 @@
 #include "exact/event_driven_world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace fooball::exact {
@@ -144,6 +145,14 @@ bool EventDrivenWorld::runEvents(double dt) {
   }
 }
 
+/// After a cut-short step the balls flew to dt without events, so some passed through walls.
+/// Each is put back on the wall it crossed, moving inwards with the normal speed it had when it
+/// crossed: in free flight along the normal, v² − 2·g_n·x is constant, so
+///   v_n'² = v_n² + 2·g_n·(contact − x)
+/// keeps the energy exactly (moving the centre by contact − x changes the potential energy by
+/// −m·g_n·(contact − x)). Merely clamping the position would keep v_n and gain m·|g_n|·depth
+/// for a ball that fell through the floor. A negative v_n'² (only possible with drag, which
+/// slowed it after the crossing) leaves it at rest there, losing energy, never gaining it.
 void EventDrivenWorld::confineToWalls() {
   for (std::uint32_t ball = 0; ball < ballCount(); ++ball) {
     for (int side = 0; side < 4; ++side) {
@@ -153,13 +162,16 @@ void EventDrivenWorld::confineToWalls() {
       const double inward = isLowerSide(wall) ? 1.0 : -1.0;
       const double contact = contactCoordinate(wall, balls_[ball].radius);
       double& coordinate = componentRef(balls_[ball].position, axis);
-      if (inward * (coordinate - contact) < 0.0) coordinate = contact;
       double& normalVelocity = componentRef(balls_[ball].velocity, axis);
-      if (coordinate == contact && inward * normalVelocity < 0.0) {
-        counters_.wallImpulse += 2.0 * mass_[ball] * std::abs(normalVelocity);
-        ++counters_.wallCollisions;
-        normalVelocity = -normalVelocity;
-      }
+      const double depth = inward * (contact - coordinate);  // m beyond the contact position
+      if (depth < 0.0 || (depth == 0.0 && inward * normalVelocity >= 0.0)) continue;
+      const double squared = normalVelocity * normalVelocity +
+                             2.0 * component(world_.gravity, axis) * (contact - coordinate);
+      const double newVelocity = inward * std::sqrt(std::max(squared, 0.0));
+      counters_.wallImpulse += mass_[ball] * inward * (newVelocity - normalVelocity);
+      ++counters_.wallCollisions;
+      coordinate = contact;
+      normalVelocity = newVelocity;
     }
   }
 }

@@ -81,7 +81,13 @@ class EventDrivenWorld {
   bool wallReachable(std::uint32_t ball, Side wall) const;
   Event wallContact(std::uint32_t ball, Side wall) const;
   CellCrossing nextCellCrossing(std::uint32_t ball) const;
+  CellCrossing straightCellCrossing(std::uint32_t ball) const;
+  CellCrossing curvedCellCrossing(std::uint32_t ball) const;
   void checkPair(std::uint32_t ball, std::uint32_t other, Event& next);
+  void checkStraightPair(std::uint32_t ball, std::uint32_t other, Event& next);
+  void checkCurvedPair(std::uint32_t ball, std::uint32_t other, Event& next);
+  void schedulePair(std::uint32_t ball, std::uint32_t other, Event& next, double time,
+                    EventKind kind);
   static void keepEarlier(Event& next, const Event& candidate);
   void setInteraction(std::uint32_t ball, const Event& interaction);
   void reschedule(std::uint32_t ball);
@@ -94,6 +100,9 @@ class EventDrivenWorld {
   void layToRest(std::uint32_t ball, Side wall);
   void liftIfMoving(std::uint32_t ball);
 
+  /// No gravity and no drag: every ball flies in a straight line at constant speed, and the
+  /// predictions take their closed forms directly (nobody rests on a wall without gravity).
+  bool straightFlight() const { return world_.airResistance == 0.0 && world_.gravity == Vec2{}; }
   /// m/s², the gravity the ball feels (less what walls it rests on carry).
   Vec2 gravityOf(std::uint32_t ball) const {
     return restingCount_ == 0 ? world_.gravity : gravityOn(restingOn_[ball], world_.gravity);

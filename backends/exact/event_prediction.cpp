@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "exact/barrier_contact.h"
 #include "exact/event_driven_world.h"
@@ -38,11 +40,12 @@ void EventDrivenWorld::crossCell(std::uint32_t ball, Side side) {
 /// With cells, a ball can touch a wall only from the row or column of cells along it (cells are
 /// wider than any radius), so walls are checked there only.
 bool EventDrivenWorld::wallReachable(std::uint32_t ball, Side wall) const {
-  if (!wallOn(wall)) return false;
-  if (!cellsActive_) return true;
-  const int axis = axisOf(wall);
-  const int cell = axis == 0 ? cells_.columnOf(ball) : cells_.rowOf(ball);
-  return isLowerSide(wall) ? cell == 0 : cell + 1 == cells_.cellCount(axis);
+  if (cellsActive_) {
+    const int axis = axisOf(wall);
+    const int cell = axis == 0 ? cells_.columnOf(ball) : cells_.rowOf(ball);
+    if (isLowerSide(wall) ? cell != 0 : cell + 1 != cells_.cellCount(axis)) return false;
+  }
+  return wallOn(wall);
 }
 
 Event EventDrivenWorld::wallContact(std::uint32_t ball, Side wall) const {
@@ -58,6 +61,10 @@ Event EventDrivenWorld::wallContact(std::uint32_t ball, Side wall) const {
 }
 
 CellCrossing EventDrivenWorld::nextCellCrossing(std::uint32_t ball) const {
+  return straightFlight() ? straightCellCrossing(ball) : curvedCellCrossing(ball);
+}
+
+CellCrossing EventDrivenWorld::curvedCellCrossing(std::uint32_t ball) const {
   const BallMotion& motion = balls_[ball];
   const Vec2 gravity = gravityOf(ball);
   CellCrossing next;
@@ -82,11 +89,62 @@ CellCrossing EventDrivenWorld::nextCellCrossing(std::uint32_t ball) const {
   return next;
 }
 
+/// curvedCellCrossing in straight flight: firstBarrierContact with no acceleration and no drag
+/// reduces to gap / closing speed for the face the ball moves towards (0 if rounding left it on
+/// or past that face), and never for the face behind it.
+CellCrossing EventDrivenWorld::straightCellCrossing(std::uint32_t ball) const {
+  const BallMotion& motion = balls_[ball];
+  CellCrossing next;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double coordinate = component(motion.position, axis);
+    const double rate = component(motion.velocity, axis);
+    const int cell = axis == 0 ? cells_.columnOf(ball) : cells_.rowOf(ball);
+    double gap;
+    Side face;
+    if (rate < 0.0) {
+      if (cell == 0) continue;  // border cells reach to infinity outwards
+      gap = coordinate - cells_.lowerFace(axis, cell);
+      face = lowerSide(axis);
+    } else if (rate > 0.0) {
+      if (cell + 1 == cells_.cellCount(axis)) continue;
+      gap = cells_.upperFace(axis, cell) - coordinate;
+      face = upperSide(axis);
+    } else {
+      continue;
+    }
+    const double delay = gap <= 0.0 ? 0.0 : gap / std::abs(rate);
+    if (now_ + delay < next.time) next = {now_ + delay, face};
+  }
+  return next;
+}
+
 /// Predicts the contact of `ball` (advanced to now) with `other`. If it comes before `next`,
 /// it becomes the ball's next interaction; if before the other's, the other's too, so each
 /// ball's interaction event stays its earliest. The event it displaces there needs no removal:
 /// its own partner's version check, or a fresh prediction when it comes due, catches it.
 void EventDrivenWorld::checkPair(std::uint32_t ball, std::uint32_t other, Event& next) {
+  if (straightFlight()) {
+    checkStraightPair(ball, other, next);
+  } else {
+    checkCurvedPair(ball, other, next);
+  }
+}
+
+/// checkCurvedPair with decay = 1, s = τ and g = 0, kept small for the common gas.
+void EventDrivenWorld::checkStraightPair(std::uint32_t ball, std::uint32_t other, Event& next) {
+  const BallMotion& motion = balls_[ball];
+  const BallMotion& partner = balls_[other];
+  const Vec2 separation =
+      (partner.position - motion.position) + (now_ - partner.time) * partner.velocity;
+  const double delay = linearContactParameter(separation, partner.velocity - motion.velocity,
+                                              motion.radius + partner.radius);
+  if (delay == std::numeric_limits<double>::infinity()) return;
+  schedulePair(ball, other, next, now_ + delay, EventKind::Pair);
+}
+
+/// The general case: both balls fly under gravity and drag (free_flight.h); their relative path
+/// is curved only when they feel different gravity (one rests on a wall).
+void EventDrivenWorld::checkCurvedPair(std::uint32_t ball, std::uint32_t other, Event& next) {
   const BallMotion& motion = balls_[ball];
   const BallMotion& partner = balls_[other];
   const double drag = world_.airResistance;
@@ -109,9 +167,17 @@ void EventDrivenWorld::checkPair(std::uint32_t ball, std::uint32_t other, Event&
     if (contact.kind == PairContactKind::Recheck) kind = EventKind::Recheck;
     delay = contact.time;
   }
-  const double time = now_ + delay;
+  schedulePair(ball, other, next, now_ + delay, kind);
+}
+
+/// A contact of `ball` and `other` at `time` (s) becomes the interaction of each for whom it
+/// comes earlier: of `ball` through `next`, of `other` at once.
+void EventDrivenWorld::schedulePair(std::uint32_t ball, std::uint32_t other, Event& next,
+                                    double time, EventKind kind) {
+  const BallMotion& partner = balls_[other];
   if (time < next.time) next = {time, partner.version, other, kind};
-  if (time < partner.interactionTime) setInteraction(other, {time, motion.version, ball, kind});
+  if (time < partner.interactionTime)
+    setInteraction(other, {time, balls_[ball].version, ball, kind});
 }
 
 void EventDrivenWorld::keepEarlier(Event& next, const Event& candidate) {

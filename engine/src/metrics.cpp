@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fooball/cell_grid.h"
+#include "overlap_search.h"
 
 namespace fooball {
 
@@ -41,23 +41,9 @@ double maxOverlap(std::span<const Vec2> positions, std::span<const double> radii
                   const Walls& walls) {
   if (positions.empty()) return 0.0;
   double deepest = 0.0;
-  double largestRadius = 0.0;
-  for (std::size_t i = 0; i < positions.size(); ++i) {
+  for (std::size_t i = 0; i < positions.size(); ++i)
     deepest = std::max(deepest, wallOverlap(positions[i], radii[i], box, walls));
-    largestRadius = std::max(largestRadius, radii[i]);
-  }
-
-  // Any two overlapping balls lie in the same or adjacent cells when cells are a diameter wide.
-  CellGrid grid;
-  grid.build(positions, box.width, box.height, 2.0 * largestRadius);
-  grid.forEachNearbyPair([&](std::uint32_t a, std::uint32_t b) {
-    const double reach = radii[a] + radii[b];
-    const double distanceSquared = lengthSquared(positions[a] - positions[b]);
-    if (distanceSquared >= reach * reach) return;
-    const double depth = reach - std::sqrt(distanceSquared);
-    deepest = std::max(deepest, depth / std::min(radii[a], radii[b]));
-  });
-  return deepest;
+  return std::max(deepest, deepestPairOverlap(positions, radii));
 }
 
 std::size_t countEscaped(std::span<const Vec2> positions, const Box& box) {

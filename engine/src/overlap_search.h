@@ -25,4 +25,9 @@ struct DeepOverlap {
 /// same pair.
 std::optional<DeepOverlap> findDeepOverlap(std::span<const BallDef> balls, double slop);
 
+/// The deepest overlap of two balls (radii in m), as a fraction of the smaller radius; 0 when
+/// none overlap. The grids of findDeepOverlap, so a few big balls among many small ones cost no
+/// more than equal balls.
+double deepestPairOverlap(std::span<const Vec2> positions, std::span<const double> radii);
+
 }  // namespace fooball

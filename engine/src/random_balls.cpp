@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "fooball/scene_error.h"
+#include "fooball/split_mix64.h"
 #include "json_place.h"
 #include "message_text.h"
-#include "split_mix64.h"
 
 namespace fooball {
 namespace {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "capacity_chart_builder.h"
 #include "chart_image.h"
 #include "offscreen_qt.h"
 
@@ -25,10 +26,8 @@ QString countText(std::size_t balls) {
 
 }  // namespace
 
-void saveCapacityChart(std::span<const measure::CapacityResult> results,
-                       const measure::CapacitySettings& settings,
-                       const std::filesystem::path& path) {
-  const OffscreenQt qt;
+QChart* makeCapacityChart(std::span<const measure::CapacityResult> results,
+                          const measure::CapacitySettings& settings) {
   auto* chart = new QChart;
   chart->legend()->setAlignment(Qt::AlignBottom);
 
@@ -92,17 +91,27 @@ void saveCapacityChart(std::span<const measure::CapacityResult> results,
     }
   }
 
+  return chart;
+}
+
+QString capacityChartTitle(const measure::CapacitySettings& settings) {
   QString options;
   for (const std::string& option : settings.options)
     options += ", " + QString::fromStdString(option);
-  const QString title = QString(
-                            "Capacity: the most balls whose median step fits %1 ms "
-                            "(standard gas at packing fraction %2, dt %3 s%4)")
-                            .arg(settings.budgetMs, 0, 'g', 4)
-                            .arg(settings.packingFraction)
-                            .arg(settings.dt, 0, 'g', 4)
-                            .arg(options);
-  saveCharts({chart}, title, 1000, 640, path);
+  return QString(
+             "Capacity: the most balls whose median step fits %1 ms "
+             "(standard gas at packing fraction %2, dt %3 s%4)")
+      .arg(settings.budgetMs, 0, 'g', 4)
+      .arg(settings.packingFraction)
+      .arg(settings.dt, 0, 'g', 4)
+      .arg(options);
+}
+
+void saveCapacityChart(std::span<const measure::CapacityResult> results,
+                       const measure::CapacitySettings& settings,
+                       const std::filesystem::path& path) {
+  const OffscreenQt qt;
+  saveCharts({makeCapacityChart(results, settings)}, capacityChartTitle(settings), 1000, 640, path);
 }
 
 }  // namespace fooball::plots

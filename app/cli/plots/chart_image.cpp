@@ -4,6 +4,7 @@
 #include <QChartView>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLegendMarker>
 #include <QLogValueAxis>
 #include <QPixmap>
 #include <QVBoxLayout>
@@ -34,6 +35,17 @@ double decadeBelow(double value) {
 }
 double decadeAbove(double value) {
   return std::pow(10.0, std::ceil(std::log10(value)));
+}
+
+void addSeries(QChart* chart, QAbstractSeries* series, QAbstractAxis* x, QAbstractAxis* y,
+               bool inLegend) {
+  chart->addSeries(series);
+  series->attachAxis(x);
+  series->attachAxis(y);
+  if (!inLegend) {
+    for (QLegendMarker* marker : chart->legend()->markers(series))
+      marker->setVisible(false);
+  }
 }
 
 QLogValueAxis* decadeAxis(const QString& title, double low, double high, const char* labelFormat) {

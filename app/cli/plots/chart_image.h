@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+class QAbstractAxis;
+class QAbstractSeries;
 class QChart;
 class QLogValueAxis;
 
@@ -21,6 +23,11 @@ double decadeAbove(double value);
 /// A base-10 log axis over whole decades around [low, high] (at least one decade), so the ticks
 /// are 1, 10, 100, …; `labelFormat` is printf-style, e.g. "%g" or "%.0e".
 QLogValueAxis* decadeAxis(const QString& title, double low, double high, const char* labelFormat);
+
+/// Adds `series` to `chart` on the axes `x` and `y`; with `inLegend` false it has no legend entry
+/// (a decoration, e.g. a Pareto front drawn over its points).
+void addSeries(QChart* chart, QAbstractSeries* series, QAbstractAxis* x, QAbstractAxis* y,
+               bool inLegend);
 
 /// Renders `charts` side by side, each `chartWidth` × `height` pixels, under `title`, into a PNG
 /// at `path`. Takes ownership of the charts. Throws std::runtime_error naming the path when the

@@ -2,7 +2,6 @@
 
 #include <QChart>
 #include <QLegend>
-#include <QLegendMarker>
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QScatterSeries>
@@ -60,13 +59,7 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
   chart->addAxis(xAxis, Qt::AlignBottom);
   chart->addAxis(yAxis, Qt::AlignLeft);
   const auto add = [&](QAbstractSeries* series, bool inLegend) {
-    chart->addSeries(series);
-    series->attachAxis(xAxis);
-    series->attachAxis(yAxis);
-    if (!inLegend) {
-      for (QLegendMarker* marker : chart->legend()->markers(series))
-        marker->setVisible(false);
-    }
+    addSeries(chart, series, xAxis, yAxis, inLegend);
   };
 
   for (const std::string& backend : backendsOf(points)) {

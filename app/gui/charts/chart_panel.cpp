@@ -203,7 +203,7 @@ void ChartPanel::applyToggles() {
   residual->setValueAxisTitle(relative ? tr("residual / |E₀|") : tr("residual (J)"));
 
   // A chart with nothing to show steps aside; the top chart carries the marker labels and the
-  // bottom one the time axis title.
+  // bottom one the time axis' labels and title.
   TimeChart* top = nullptr;
   TimeChart* bottom = nullptr;
   for (TimeChart* chart : charts_) {
@@ -215,7 +215,7 @@ void ChartPanel::applyToggles() {
   }
   for (TimeChart* chart : charts_) {
     chart->setMarkerLabelsShown(chart == top);
-    chart->setTimeAxisTitleShown(chart == bottom);
+    chart->setTimeAxisLabelsShown(chart == bottom);
   }
   viewOutOfDate_ = true;
   refresh();

@@ -1,6 +1,7 @@
 #include "time_chart.h"
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QGraphicsLayout>
 #include <QLegendMarker>
 #include <QLineSeries>
@@ -20,6 +21,13 @@ const QMargins kChartMargins(4, 2, 12, 2);
 /// px of plot height per value tick interval, and the most intervals: labels never crowd.
 constexpr double kPixelsPerValueTick = 32.0;
 constexpr int kMaxValueTicks = 6;
+/// px of plot height at least: two value tick intervals.
+constexpr double kMinPlotHeight = 2.0 * kPixelsPerValueTick;
+/// px Qt Charts puts around the title, the legend, the plot and each axis' labels and title,
+/// beyond their fonts' heights (measured on Qt 6.4 in screenshots: with less, it elides the
+/// labels and titles to "…").
+constexpr double kLayoutSpacing = 46.0;
+constexpr double kAxisTitleSpacing = 8.0;
 
 QFont sizedFont(const QFont& base, double pointSize, bool bold = false) {
   QFont font = base;
@@ -46,7 +54,13 @@ void applyScale(QValueAxis* axis, const AxisScale& scale) {
   // Every change relays the ticks out: in between, the new range must not meet the old, finer
   // interval (a range 10⁵ times wider would create 10⁵ tick items). Widen the interval before
   // the range, narrow it after.
-  if (scale.tickInterval >= axis->tickInterval()) {
+  if (axis->tickType() != QValueAxis::TicksDynamic) {
+    // Fixed ticks (see TimeChart::setRuns) are a handful whatever the range: set both, then
+    // go back to ticks at round values.
+    axis->setRange(scale.min, scale.max);
+    axis->setTickInterval(scale.tickInterval);
+    axis->setTickType(QValueAxis::TicksDynamic);
+  } else if (scale.tickInterval >= axis->tickInterval()) {
     axis->setTickInterval(scale.tickInterval);
     axis->setRange(scale.min, scale.max);
   } else {
@@ -93,7 +107,7 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
   setChart(chart_);
   setRenderHint(QPainter::Antialiasing);
   setFrameShape(QFrame::NoFrame);
-  setMinimumHeight(150);
+  updateMinimumHeight();
 
   markerOverlay_ = new MarkerOverlay(chart_, timeAxis_, markers);
   connect(chart_, &QChart::plotAreaChanged, this, [this](const QRectF& plotArea) {
@@ -107,6 +121,11 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
 }
 
 void TimeChart::setRuns(const QStringList& runNames) {
+  // Attaching a series resets an axis' range to its domain's, whatever the tick interval: from
+  // a residual axis ticked every 1e-12 J to a range of 1 that is 10¹² tick items (the window
+  // hung there). A fixed tick count is safe until the next redraw sets a range and interval.
+  timeAxis_->setTickType(QValueAxis::TicksFixed);
+  valueAxis_->setTickType(QValueAxis::TicksFixed);
   removeAllSeries();
   valueScale_.reset();
   const int runCount = static_cast<int>(runNames.size());
@@ -197,10 +216,27 @@ bool TimeChart::showsAnyQuantity() const {
 
 void TimeChart::setValueAxisTitle(const QString& title) {
   valueAxis_->setTitleText(title);
+  updateMinimumHeight();
 }
 
-void TimeChart::setTimeAxisTitleShown(bool shown) {
+void TimeChart::setTimeAxisLabelsShown(bool shown) {
+  timeAxis_->setLabelsVisible(shown);
   timeAxis_->setTitleVisible(shown);
+  updateMinimumHeight();
+}
+
+void TimeChart::updateMinimumHeight() {
+  const QFontMetricsF title(chart_->titleFont());
+  const QFontMetricsF legend(chart_->legend()->font());
+  const QFontMetricsF tickLabels(timeAxis_->labelsFont());
+  const QFontMetricsF axisTitle(valueAxis_->titleFont());
+  // The value axis' title runs up the side of the plot: shorter, and Qt elides it.
+  const double plot =
+      std::max(kMinPlotHeight, axisTitle.horizontalAdvance(valueAxis_->titleText()) + 8.0);
+  double height = kChartMargins.top() + kChartMargins.bottom() + title.height() + legend.height() +
+                  plot + tickLabels.height() + kLayoutSpacing;
+  if (timeAxis_->isTitleVisible()) height += axisTitle.height();
+  setMinimumHeight(static_cast<int>(std::ceil(height)));
 }
 
 void TimeChart::setMarkerLabelsShown(bool shown) {

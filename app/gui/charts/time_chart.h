@@ -41,7 +41,9 @@ class TimeChart : public QChartView {
   bool showsAnyQuantity() const;
 
   void setValueAxisTitle(const QString& title);
-  void setTimeAxisTitleShown(bool shown);
+  /// The time axis' tick labels and title. The panel's charts share one time axis, so only the
+  /// bottom one labels it (the others keep its grid lines): room for taller plots.
+  void setTimeAxisLabelsShown(bool shown);
   void setMarkerLabelsShown(bool shown);
   /// The next redraw fits the value axis to the data afresh instead of keeping its range.
   void forgetValueScale();
@@ -85,6 +87,9 @@ class TimeChart : public QChartView {
   void applyShownQuantities();
   /// As many value tick intervals as `plotArea` has room for.
   static int valueTicksFor(const QRectF& plotArea);
+  /// Tall enough for the title, legend, tick labels and axis titles shown, and a plot as tall
+  /// as the value axis' title: a shorter chart elides its labels to "…".
+  void updateMinimumHeight();
   /// Fits the value axis to shownValues_ for the plot's current height.
   void fitValueAxis();
 

@@ -23,7 +23,8 @@ StateSums sumState(std::span<const Vec2> positions, std::span<const Vec2> veloci
                    std::span<const double> masses, Vec2 gravity);
 
 /// Deepest ball–ball or ball–wall (walls that are on) penetration, as a fraction of the smaller
-/// radius (for walls, of the ball's radius); 0 when nothing overlaps. O(N) with a cell grid.
+/// radius (for walls, of the ball's radius); 0 when nothing overlaps. O(N log N) with one
+/// grid per power-of-two size, so mixed sizes cost no more than equal ones.
 double maxOverlap(std::span<const Vec2> positions, std::span<const double> radii, const Box& box,
                   const Walls& walls);
 

@@ -1,0 +1,49 @@
+// Mass ratio: one head-on hit of masses M and m (equal radii), checked against the closed form
+// v1' = (M − m)/(M + m)·v1, v2' = 2M/(M + m)·v1 for a ball of mass M at v1 hitting m at rest.
+// A solver that adds the two shares of an impulse in a lossy order, or iterates towards it in
+// float, loses the light ball's share first.
+
+#include <algorithm>
+#include <cmath>
+
+#include "fooball/scene.h"
+#include "sweep_run.h"
+#include "sweeps.h"
+
+namespace fooball::failure_map {
+
+namespace {
+
+constexpr double kRadius = 0.25;  // m
+constexpr double kSpeed = 1.0;    // m/s, of the shooter
+
+/// Ball 0 (mass `shooterMass`, kg) at kSpeed towards ball 1 (`targetMass`) at rest; the largest
+/// error of the two outgoing velocities over kSpeed.
+double headOnError(std::string_view backend, double shooterMass, double targetMass) {
+  Scene scene;
+  scene.name = "mass ratio";
+  scene.box = {8.0, 2.0};
+  scene.balls = {{{2.0, 1.0}, {kSpeed, 0.0}, kRadius, shooterMass},
+                 {{2.0 + 2.0 * kRadius + 0.3, 1.0}, {}, kRadius, targetMass}};
+  // 0.3 m to the hit, then ≤ 2 m/s for the rest of 1 s: both stay clear of the walls.
+  const RunRecord run = runScene(scene, backend, 1.0);
+  const double total = shooterMass + targetMass;
+  const Vec2 shooterExact{(shooterMass - targetMass) / total * kSpeed, 0.0};
+  const Vec2 targetExact{2.0 * shooterMass / total * kSpeed, 0.0};
+  return std::max(length(run.velocities[0] - shooterExact),
+                  length(run.velocities[1] - targetExact)) /
+         kSpeed;
+}
+
+}  // namespace
+
+std::vector<SweepPoint> massRatioSweep(std::string_view backend, bool quick) {
+  std::vector<SweepPoint> points;
+  for (const double ratio : logGrid(1.0, 1e6, quick ? 7 : 13)) {
+    points.push_back(measuredPoint("heavy hits light", ratio, headOnError(backend, ratio, 1.0)));
+    points.push_back(measuredPoint("light hits heavy", ratio, headOnError(backend, 1.0, ratio)));
+  }
+  return points;
+}
+
+}  // namespace fooball::failure_map

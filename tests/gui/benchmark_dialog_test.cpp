@@ -1,0 +1,214 @@
+#include "benchmark_dialog.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QImage>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <functional>
+
+#include "gui_fixture.h"
+
+namespace fooball::gui::testing {
+namespace {
+
+/// Sanitizers slow the measured steps several-fold; the bounds below are for wall time.
+double slowdown() {
+  return qEnvironmentVariableIsSet("FOOBALL_SANITIZED") ? 5.0 : 1.0;
+}
+
+/// Processes events until `done` or `seconds` pass; whether `done` came true.
+bool waitUntil(const std::function<bool()>& done, double seconds) {
+  QElapsedTimer clock;
+  clock.start();
+  while (!done()) {
+    if (double(clock.elapsed()) > 1000.0 * seconds) return false;
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+  }
+  return true;
+}
+
+class Benchmark : public GuiTest {
+ protected:
+  BenchmarkDialog* openDialog() {
+    window->benchmarkAction()->trigger();
+    return window->benchmarkDialog();
+  }
+
+  /// Only `backend` checked, the budget `budgetMs`.
+  void choose(BenchmarkDialog* dialog, const QString& backend, const QString& budgetMs) {
+    QListWidget* list = dialog->backendList();
+    for (int row = 0; row < list->count(); ++row) {
+      QListWidgetItem* item = list->item(row);
+      item->setCheckState(backend.isEmpty() || item->text() == backend ? Qt::Checked
+                                                                       : Qt::Unchecked);
+    }
+    dialog->budgetEdit()->setText(budgetMs);
+  }
+};
+
+TEST_F(Benchmark, ToolsMenuOpensTheDialog) {
+  open(stillBalls());
+  bool inToolsMenu = false;
+  for (QAction* menu : window->menuBar()->actions()) {
+    if (menu->text() == QStringLiteral("&Tools") && menu->menu())
+      inToolsMenu = menu->menu()->actions().contains(window->benchmarkAction());
+  }
+  EXPECT_TRUE(inToolsMenu);
+  EXPECT_EQ(window->benchmarkDialog(), nullptr);
+  BenchmarkDialog* dialog = openDialog();
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_TRUE(dialog->isVisible());
+  EXPECT_EQ(dialog->backendList()->count(), static_cast<int>(registeredBackends().size()));
+  for (int row = 0; row < dialog->backendList()->count(); ++row)
+    EXPECT_EQ(dialog->backendList()->item(row)->checkState(), Qt::Checked) << "all by default";
+  EXPECT_EQ(dialog->budgetEdit()->text(), QStringLiteral("16.67"));
+  EXPECT_FALSE(dialog->cancelButton()->isEnabled());
+}
+
+TEST_F(Benchmark, TinyBudgetRunGivesACapacityWithoutBlockingTheWindow) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  // 1 ms: a few thousand balls, found in well under a second, yet long enough (several counts
+  // of ten steps) for the event loop to come round while the search runs.
+  choose(dialog, QStringLiteral("elastic"), QStringLiteral("1"));
+
+  // A timer of the GUI thread: it ticks during the run only if the search runs elsewhere.
+  int ticksDuringRun = 0;
+  QTimer ticker;
+  ticker.setInterval(0);  // fires on every pass of the event loop
+  QObject::connect(&ticker, &QTimer::timeout, [&] {
+    if (dialog->running()) ++ticksDuringRun;
+  });
+  ticker.start();
+
+  QTest::mouseClick(dialog->startButton(), Qt::LeftButton);
+  EXPECT_TRUE(dialog->running()) << "Start returned before the search ended";
+  EXPECT_TRUE(runs().paused()) << "the simulation pauses while the benchmark measures";
+  EXPECT_TRUE(dialog->cancelButton()->isEnabled());
+  EXPECT_FALSE(dialog->startButton()->isEnabled());
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 20.0 * slowdown()));
+
+  EXPECT_GT(ticksDuringRun, 0) << "the event loop ran while the search did";
+  EXPECT_FALSE(runs().paused()) << "the simulation continues after the run";
+  EXPECT_EQ(dialog->progressBar()->value(), dialog->progressBar()->maximum());
+  ASSERT_EQ(dialog->results().size(), 1u);
+  EXPECT_EQ(dialog->results()[0].backend, "elastic");
+  EXPECT_GT(dialog->results()[0].outcome.balls, 0u);
+  EXPECT_LE(dialog->results()[0].outcome.medianStepMs, 1.0);
+  ASSERT_EQ(dialog->resultsTable()->rowCount(), 1);
+  EXPECT_EQ(dialog->resultsTable()->item(0, 0)->text(), QStringLiteral("elastic"));
+  EXPECT_EQ(dialog->resultsTable()->item(0, 1)->text().toULongLong(),
+            dialog->results()[0].outcome.balls);
+  EXPECT_TRUE(dialog->errorLabel()->isHidden());
+
+  const QTemporaryDir directory;
+  const QString csvPath = directory.filePath(QStringLiteral("capacity.csv"));
+  ASSERT_TRUE(dialog->saveCsv(csvPath));
+  QFile csv(csvPath);
+  ASSERT_TRUE(csv.open(QIODevice::ReadOnly));
+  const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
+  ASSERT_EQ(lines.size(), 2);
+  EXPECT_EQ(lines[0], QStringLiteral("backend,balls,median_step_ms"));
+  EXPECT_TRUE(
+      lines[1].startsWith(QStringLiteral("elastic,%1,").arg(dialog->results()[0].outcome.balls)))
+      << lines[1].toStdString();
+
+  const QString pngPath = directory.filePath(QStringLiteral("capacity.png"));
+  ASSERT_TRUE(dialog->savePng(pngPath));
+  const QImage image(pngPath);
+  EXPECT_GT(image.width(), 100);
+  EXPECT_GT(image.height(), 100);
+}
+
+TEST_F(Benchmark, PausedSimulationStaysPausedAfterARun) {
+  open(stillBalls());
+  runs().setPaused(true);
+  BenchmarkDialog* dialog = openDialog();
+  choose(dialog, QStringLiteral("elastic"), QStringLiteral("0.05"));
+  ASSERT_TRUE(dialog->start());
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 20.0 * slowdown()));
+  EXPECT_TRUE(runs().paused());
+}
+
+TEST_F(Benchmark, CancelStopsALongRunPromptly) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  // A second per step and every backend: minutes if it were not cancelled.
+  choose(dialog, QString(), QStringLiteral("1000"));
+  ASSERT_TRUE(dialog->start());
+  // Let it measure a count or two first.
+  waitUntil([&] { return dialog->progressBar()->value() > 0; }, 2.0);
+  QElapsedTimer clock;
+  clock.start();
+  QTest::mouseClick(dialog->cancelButton(), Qt::LeftButton);
+  // The search checks for a stop every step; the largest step of the first seconds of the
+  // search is far below this bound.
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 10.0 * slowdown()));
+  EXPECT_LT(double(clock.elapsed()), 10'000.0 * slowdown());
+  EXPECT_LT(dialog->results().size(), registeredBackends().size());
+  EXPECT_FALSE(runs().paused());
+  EXPECT_TRUE(dialog->startButton()->isEnabled()) << "ready for another run";
+}
+
+TEST_F(Benchmark, ClosingTheDialogMidRunCancelsIt) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  choose(dialog, QString(), QStringLiteral("1000"));
+  ASSERT_TRUE(dialog->start());
+  QTest::qWait(50);
+  dialog->close();  // returns once the worker has stopped and joined
+  EXPECT_FALSE(dialog->isVisible());
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 1.0));
+  EXPECT_FALSE(runs().paused());
+}
+
+TEST_F(Benchmark, ClosingTheWindowMidRunIsSafe) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  choose(dialog, QString(), QStringLiteral("1000"));
+  ASSERT_TRUE(dialog->start());
+  QTest::qWait(50);
+  window->close();
+  EXPECT_FALSE(dialog->isVisible()) << "the dialog closes with the window";
+  window.reset();  // joins the worker; ASan would report a use after free or a leak
+  QCoreApplication::processEvents();  // events the worker posted go with the dialog
+}
+
+TEST_F(Benchmark, BadBudgetShowsOneErrorAndStartsNothing) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  for (const QString& budget : {QStringLiteral("0"), QStringLiteral("-2"), QStringLiteral("nan"),
+                                QStringLiteral("fast"), QString()}) {
+    choose(dialog, QStringLiteral("elastic"), budget);
+    QTest::mouseClick(dialog->startButton(), Qt::LeftButton);
+    EXPECT_FALSE(dialog->running()) << budget.toStdString();
+    EXPECT_FALSE(runs().paused());
+    EXPECT_FALSE(dialog->errorLabel()->isHidden());
+    EXPECT_EQ(dialog->errorLabel()->text(), QStringLiteral("budget: must be a number > 0"))
+        << budget.toStdString();
+  }
+}
+
+TEST_F(Benchmark, UnknownOptionAndNoBackendAreErrors) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  choose(dialog, QStringLiteral("elastic"), QStringLiteral("1"));
+  dialog->optionsEdit()->setText(QStringLiteral("warp=9"));
+  EXPECT_FALSE(dialog->start());
+  EXPECT_TRUE(dialog->errorLabel()->text().contains(QStringLiteral("warp")));
+  dialog->optionsEdit()->clear();
+  choose(dialog, QStringLiteral("no such backend"), QStringLiteral("1"));
+  EXPECT_FALSE(dialog->start());
+  EXPECT_TRUE(dialog->errorLabel()->text().contains(QStringLiteral("backends")));
+}
+
+}  // namespace
+}  // namespace fooball::gui::testing

@@ -1,0 +1,290 @@
+// A seeded monkey: thousands of random user actions on the main window (mouse tools in every
+// mode and scope, attractors, sliders to any position, ball counts from 0 up, backends,
+// compare mode, pause and step, presets, walls and collisions, ball edits, resets), with the
+// window's invariants checked after every batch. FOOBALL_MONKEY_SEED and FOOBALL_MONKEY_ACTIONS
+// replay a failure or run a longer soak.
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "charts/chart_panel.h"
+#include "gui_fixture.h"
+#include "log_slider.h"
+#include "robustness/case_run.h"
+#include "settings_sidebar.h"
+
+namespace fooball::gui::testing {
+namespace {
+
+bool sanitized() {
+  return qEnvironmentVariableIsSet("FOOBALL_SANITIZED");
+}
+
+std::uint64_t environmentNumber(const char* name, std::uint64_t fallback) {
+  bool ok = false;
+  const qulonglong value = qEnvironmentVariable(name).toULongLong(&ok);
+  return ok ? value : fallback;
+}
+
+/// Fast enough for every test run: Box2D's continuous collision gets slow with thousands of
+/// fast balls (slingshots, attractors at full strength), so 1000 balls at most. The sanitizers
+/// slow the physics about tenfold: fewer actions and balls. FOOBALL_MONKEY_ACTIONS soaks longer.
+const std::uint64_t kDefaultSeed = 20261122;
+const std::uint64_t kDefaultActions = sanitized() ? 150 : 600;
+const int kMaxBalls = sanitized() ? 300 : 1000;
+constexpr int kActionsPerBatch = 25;
+
+class GuiMonkey : public GuiTest {
+ protected:
+  void SetUp() override {
+    open(fooball::testing::emptyBox());
+    window->openPreset(QStringLiteral("default"));
+    sidebar_ = window->sidebar();
+    for (QAction* action : window->findChildren<QAction*>()) {
+      if (action->shortcut() == QKeySequence(Qt::Key_Space)) pause_ = action;
+      if (action->shortcut() == QKeySequence(Qt::Key_Period)) step_ = action;
+    }
+    for (QPushButton* button : sidebar_->findChildren<QPushButton*>()) {
+      const QString text = button->text();
+      if (text == QStringLiteral("Restart") || text == QStringLiteral("Reset scene") ||
+          text == QStringLiteral("Reset sliders") || text.startsWith(QStringLiteral("Clear")))
+        resets_.push_back(button);
+    }
+    ASSERT_NE(pause_, nullptr);
+    ASSERT_NE(step_, nullptr);
+    ASSERT_EQ(resets_.size(), 4u) << "Restart, Reset scene, Reset sliders, Clear attractors";
+  }
+
+  int uniform(int low, int high) { return std::uniform_int_distribution<int>(low, high)(rng_); }
+  double uniformReal(double low, double high) {
+    return std::uniform_real_distribution<double>(low, high)(rng_);
+  }
+  bool chance(double p) { return uniformReal(0.0, 1.0) < p; }
+  QPoint anywhereInView() {
+    return {uniform(0, view()->width() - 1), uniform(0, view()->height() - 1)};
+  }
+  template <class Widget>
+  Widget* named(const char* name) const {
+    return window->findChild<Widget*>(QString::fromLatin1(name));
+  }
+  /// As a user picking item `index` from the list: the sidebar acts on activated(), which
+  /// setCurrentIndex() alone does not emit.
+  static void choose(QComboBox* box, int index) {
+    box->setCurrentIndex(index);
+    emit box->activated(index);
+  }
+  void clickRadio(const char* name) {
+    if (auto* radio = named<QRadioButton>(name)) radio->click();
+  }
+
+  /// One random action; returns its name for the failure message.
+  std::string act() {
+    switch (uniform(0, 12)) {
+      case 0:
+      case 1: {  // a press, a drag over a few frames, a release, in a random mode and scope
+        const char* modes[] = {"attractRadio", "repelRadio", "grabRadio", "slingshotRadio"};
+        const char* scopes[] = {"allRadio", "nearestRadio", "selectedRadio"};
+        const char* mode = modes[uniform(0, 3)];
+        const char* scope = scopes[uniform(0, 2)];
+        clickRadio(mode);
+        clickRadio(scope);
+        QTest::mousePress(view(), Qt::LeftButton, {}, anywhereInView());
+        for (int move = uniform(0, 3); move > 0; --move) {
+          QTest::mouseMove(view(), anywhereInView());
+          frames(1);
+        }
+        QTest::mouseRelease(view(), Qt::LeftButton, {}, anywhereInView());
+        return std::string("drag ") + mode + " " + scope;
+      }
+      case 2:
+        QTest::mouseClick(view(), Qt::RightButton, {}, anywhereInView());
+        return "attractor";
+      case 3: {  // a slider to a random position, an end half the time
+        LogSlider* sliders[] = {sidebar_->gravitySlider(), sidebar_->airResistanceSlider(),
+                                sidebar_->strengthSlider(), sidebar_->timeScaleSlider()};
+        QSlider* slider = sliders[uniform(0, 3)]->slider();
+        const int position = chance(0.5) ? (chance(0.5) ? slider->minimum() : slider->maximum())
+                                         : uniform(slider->minimum(), slider->maximum());
+        slider->setValue(position);
+        return "slider " + slider->parentWidget()->objectName().toStdString() + " to " +
+               std::to_string(position);
+      }
+      case 4: {
+        const int choices[] = {0, 1, uniform(0, kMaxBalls / 10), uniform(0, kMaxBalls), kMaxBalls};
+        const int count = choices[uniform(0, 4)];
+        sidebar_->ballCountBox()->setValue(count);
+        return "balls " + std::to_string(count);
+      }
+      case 5: {
+        QComboBox* box = sidebar_->backendBox();
+        choose(box, uniform(0, box->count() - 1));
+        return "backend " + box->currentText().toStdString();
+      }
+      case 6: {  // compare on (any backend) or off (index 0)
+        QComboBox* box = sidebar_->compareBox();
+        choose(box, chance(0.4) ? 0 : uniform(0, box->count() - 1));
+        return "compare " + box->currentText().toStdString();
+      }
+      case 7:
+        if (chance(0.5) && step_->isEnabled()) {
+          step_->trigger();
+          return "single step";
+        }
+        pause_->trigger();
+        return "pause/continue";
+      case 8: {
+        auto* presets = named<QComboBox>("presetBox");
+        choose(presets, uniform(0, presets->count() - 1));
+        ballsMayBeOutside_ = false;
+        return "preset " + presets->currentText().toStdString();
+      }
+      case 9: {
+        auto* box = named<QCheckBox>(chance(0.5) ? "wallsBox" : "ballCollisionsBox");
+        box->click();
+        return box->objectName().toStdString() + (box->isChecked() ? " on" : " off");
+      }
+      case 10:
+        return editABall();
+      case 11: {
+        QPushButton* button = resets_[static_cast<std::size_t>(uniform(0, 3))];
+        button->click();
+        if (button->text() == QStringLiteral("Restart") ||
+            button->text() == QStringLiteral("Reset scene"))
+          ballsMayBeOutside_ = false;
+        return button->text().toStdString();
+      }
+      default:
+        frames(uniform(1, 5));
+        return "frames";
+    }
+  }
+
+  /// Pauses, clicks a ball, and types a random (possibly refused) value into a field of the
+  /// inspector, or deletes the ball.
+  std::string editABall() {
+    if (mainRun().ballCount() == 0) return "edit: no balls";
+    if (!runs().paused()) pause_->trigger();
+    const auto index = static_cast<std::size_t>(uniform(0, int(mainRun().ballCount()) - 1));
+    QTest::mouseClick(view(), Qt::LeftButton, {}, pixelOf(mainRun().positions()[index]));
+    if (!runs().selected()) return "edit: ball hidden under another";
+    if (chance(0.1)) {
+      named<QPushButton>("inspectorDelete")->click();
+      return "delete ball";
+    }
+    const char* fields[] = {"inspectorX",  "inspectorY",      "inspectorVx",
+                            "inspectorVy", "inspectorRadius", "inspectorMass"};
+    const char* name = fields[uniform(0, 5)];
+    auto* field = named<QDoubleSpinBox>(name);
+    field->setFocus();
+    field->setValue(uniformReal(field->minimum(), std::min(field->maximum(), 40.0)));
+    QTest::keyClick(field, Qt::Key_Return);
+    return std::string("edit ") + name;
+  }
+
+  bool closed() const {
+    const Walls walls = runs().world().walls;
+    return walls.left && walls.right && walls.bottom && walls.top;
+  }
+
+  /// Every run's state is finite, inside a closed box, and counted as the UI says; the status
+  /// bar and the charts follow the runs.
+  void checkInvariants() {
+    for (int run = 0; run < runs().runCount(); ++run) {
+      const Simulation& simulation = runs().run(run);
+      ASSERT_EQ(simulation.ballCount(), runs().ballCount()) << "run " << run;
+      // A centre may lie beyond a wall by the backend's documented slack: none for the
+      // double-precision methods, Box2D's continuous-collision tolerance for box2d
+      // (tests/robustness/case_run.cpp derives it).
+      const double slack =
+          robustness::tolerancesFor(runs().backendName(run).toStdString()).wallSlack;
+      const Box box = simulation.box();
+      for (std::size_t i = 0; i < simulation.ballCount(); ++i) {
+        const Vec2 p = simulation.positions()[i];
+        const Vec2 v = simulation.velocities()[i];
+        ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(v.x) &&
+                    std::isfinite(v.y))
+            << runs().backendName(run).toStdString() << " ball " << i;
+        if (!closed() || ballsMayBeOutside_) continue;
+        ASSERT_TRUE(p.x >= -slack && p.x <= box.width + slack && p.y >= -slack &&
+                    p.y <= box.height + slack)
+            << runs().backendName(run).toStdString() << " ball " << i << " at (" << p.x << ", "
+            << p.y << ") outside the " << box.width << " × " << box.height << " m box";
+      }
+    }
+    EXPECT_EQ(sidebar_->ballCountBox()->value(), static_cast<int>(runs().ballCount()));
+
+    // Running again, the clock, the status bar and the charts move on.
+    if (runs().paused()) pause_->trigger();
+    // Enough frames that step for a new chart sample (one every 3); at the slowest speed
+    // (0.05×) a frame is a fraction of a step, so up to 300 frames.
+    const double before = runs().time();
+    int steppingFrames = 0;
+    for (int frame = 0; frame < 300 && steppingFrames < 4; ++frame) {
+      const double frameStart = runs().time();
+      frames(1);
+      if (runs().time() > frameStart) ++steppingFrames;
+    }
+    ASSERT_GT(runs().time(), before);
+    window->updateStatusBar();
+    const QString ballsText = QObject::tr("%L1 balls").arg(runs().ballCount());
+    const QString timeText = QObject::tr("t = %1 s").arg(runs().time(), 0, 'f', 2);
+    bool ballsShown = false;
+    bool timeShown = false;
+    for (const QLabel* label : window->statusBar()->findChildren<QLabel*>()) {
+      ballsShown = ballsShown || label->text() == ballsText;
+      timeShown = timeShown || label->text() == timeText;
+    }
+    EXPECT_TRUE(ballsShown) << ballsText.toStdString();
+    EXPECT_TRUE(timeShown) << timeText.toStdString();
+    window->charts()->refresh();
+    for (int run = 0; run < runs().runCount(); ++run) {
+      EXPECT_GT(window->charts()->storedSampleCount(run), 0u);
+      EXPECT_GT(window->charts()->displayedPointCount(ChartPanel::kEnergyChart, run), 0)
+          << "E_kin " << runs().run(run).metrics().sums.kineticEnergy << " E_pot "
+          << runs().run(run).metrics().sums.potentialEnergy;
+    }
+  }
+
+  SettingsSidebar* sidebar_ = nullptr;
+  QAction* pause_ = nullptr;
+  QAction* step_ = nullptr;
+  std::vector<QPushButton*> resets_;
+  /// Walls were off since the balls were last put in the box (a scene loaded or restarted):
+  /// balls that left then stay out when the walls come back, as the walls only reflect.
+  bool ballsMayBeOutside_ = false;
+  std::mt19937_64 rng_;
+};
+
+TEST_F(GuiMonkey, RandomActionsKeepTheWindowConsistent) {
+  const std::uint64_t seed = environmentNumber("FOOBALL_MONKEY_SEED", kDefaultSeed);
+  const std::uint64_t actions = environmentNumber("FOOBALL_MONKEY_ACTIONS", kDefaultActions);
+  rng_.seed(seed);
+  for (std::uint64_t done = 0; done < actions;) {
+    std::ostringstream batch;
+    batch << "FOOBALL_MONKEY_SEED=" << seed << ", actions " << done << "…:";
+    for (int i = 0; i < kActionsPerBatch && done < actions; ++i, ++done) {
+      batch << ' ' << act() << ';';
+      if (!closed()) ballsMayBeOutside_ = true;
+      frames(uniform(0, 2));
+    }
+    SCOPED_TRACE(batch.str());
+    checkInvariants();
+    if (HasFatalFailure() || HasNonfatalFailure()) return;
+  }
+}
+
+}  // namespace
+}  // namespace fooball::gui::testing
