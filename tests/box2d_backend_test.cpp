@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -433,6 +434,70 @@ TEST(Box2dBackend, BulletsStopSmallFastBallsTunnellingThroughEachOther) {
     EXPECT_NEAR(velocityOf(*bullets, 0).x, -100.0, 1e-3);
     EXPECT_NEAR(velocityOf(*bullets, 1).x, 100.0, 1e-3);
   }
+}
+
+/// m: how far beyond a wall's face Box2D's own continuous collision may leave a ball's centre
+/// (3.25 linear slops: wall_containment.h).
+constexpr double kWallSlack = 3.25 * 0.005;
+
+/// The deepest any centre lies beyond the box's faces, m (0 when every centre is inside).
+double deepestBeyondTheWalls(const Backend& backend, const Box& box) {
+  double deepest = 0.0;
+  for (const BallDef& b : backend.save().balls) {
+    deepest = std::max({deepest, -b.position.x, b.position.x - box.width, -b.position.y,
+                        b.position.y - box.height});
+  }
+  return deepest;
+}
+
+TEST(Box2dBackend, BallsThatContinuousCollisionLetsIntoAWallArePutBack) {
+  // Random invariant case 1169 reduced to the three balls it needs. Under g = 680 m/s² a 0.65 mm,
+  // 0.3 mg bullet lies against the left wall, within the continuous collision's target depth:
+  // every time-of-impact search finds it touching at once, and eight such sub-steps use up the
+  // contact's b2_maxSubSteps for the Box2D step. Ball 1 then strikes it towards the wall and
+  // nothing stops it: it ends the first step 0.47 m inside the wall.
+  Scene scene = boxScene(
+      2.319472266828711, 1.6037904373359495,
+      {ball({0.0899213297200003, 1.1537422371380754}, {0.0012945380415835576, -0.05648520321819594},
+            0.06091602097005677, 0.13047094610938492),
+       ball({0.2750853085531262, 0.9538636377398053},
+            {0.034040681807824415, -0.0073671312863590015}, 0.04197124557847674,
+            0.02837816939633601),
+       ball({0.24574617796067502, 0.7808310072450552},
+            {-0.0028037288058744224, -0.028612964678815692}, 0.0006464735420135754,
+            2.9776851167587363e-07)});
+  scene.world.gravity = {-245.6196752217671, 631.7112901599689};
+  auto backend = loaded(scene, {{"substeps", 2.0},
+                                {"velocity_iterations", 3.0},
+                                {"position_iterations", 1.0},
+                                {"bullets", 1.0},
+                                {"auto_substeps", 0.0}});
+  for (int step = 0; step < 100; ++step) {
+    backend->step(0.038474063078296733, {});
+    ASSERT_LE(deepestBeyondTheWalls(*backend, scene.box), kWallSlack) << "step " << step;
+  }
+  EXPECT_GE(diagnostic(*backend, "balls_put_back"), 1.0);
+}
+
+TEST(Box2dBackend, ABallBeyondAWallComesBackWithItsVelocityReflected) {
+  // Where Box2D's continuous collision gives up (above), a ball can end a Box2D step deeper in a
+  // wall than half its 8 m thickness, and Box2D then pushes it out through the far side: 20 m
+  // out, beyond the wall, nothing would ever bring it back. The adapter puts it back on the
+  // wall's face and turns it back as an elastic wall would.
+  const double mass = 2.0;
+  const Box box{16.0, 9.0};
+  auto backend = loaded(boxScene(box.width, box.height, {ball({8.0, 2.0}, {0.0, 0.0}, 0.5, mass)}));
+  backend->setBall(0, ball({-20.0, 2.0}, {-3.0, 1.0}, 0.5, mass));
+  backend->step(1.0 / 240.0, {});
+
+  EXPECT_LE(deepestBeyondTheWalls(*backend, box), kWallSlack);
+  EXPECT_EQ(velocityOf(*backend, 0).x, 3.0);
+  EXPECT_EQ(velocityOf(*backend, 0).y, 1.0);
+  EXPECT_NEAR(backend->counters().wallImpulse, 2.0 * mass * 3.0, 1e-9);
+  EXPECT_EQ(diagnostic(*backend, "balls_put_back"), 1.0);
+  run(*backend, 1.0 / 240.0, 240);
+  EXPECT_GT(positionOf(*backend, 0).x, 2.0);  // on its way across the box
+  EXPECT_LE(deepestBeyondTheWalls(*backend, box), kWallSlack);
 }
 
 TEST(Box2dBackend, OptionsHaveTheirDefaultsAndRejectBadValues) {

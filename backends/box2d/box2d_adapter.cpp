@@ -25,6 +25,9 @@ void Box2dAdapter::load(const Scene& scene) {
   walls_.forget();
   world_ = std::make_unique<b2World>(toBox2d(scene.world.gravity));
   world_->SetAllowSleeping(false);
+  // Nothing applies forces to the bodies (impulses set velocities, gravity is the world's), so
+  // there is nothing to clear after every Box2D step.
+  world_->SetAutoClearForces(false);
   world_->SetContactListener(&contacts_);
   name_ = scene.name;
   box_ = scene.box;
@@ -56,6 +59,7 @@ void Box2dAdapter::load(const Scene& scene) {
   translationCapHits_ = 0;
   substepsRaised_ = 0;
   box2dSteps_ = 0;
+  ballsPutBack_ = 0;
 }
 
 Scene Box2dAdapter::save() const {
@@ -115,6 +119,7 @@ std::vector<Diagnostic> Box2dAdapter::diagnostics() const {
       {"translation_cap_hits", static_cast<double>(translationCapHits_)},
       {"auto_substeps_raised", static_cast<double>(substepsRaised_)},
       {"box2d_steps", static_cast<double>(box2dSteps_)},
+      {"balls_put_back", static_cast<double>(ballsPutBack_)},
   };
 }
 

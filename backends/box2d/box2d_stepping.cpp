@@ -6,6 +6,7 @@
 #include "box2d_adapter.h"
 #include "linear_damping.h"
 #include "translation_cap.h"
+#include "wall_containment.h"
 
 namespace fooball::box2d_detail {
 
@@ -13,8 +14,9 @@ void Box2dAdapter::step(double dt, std::span<const Vec2> forces) {
   if (!forces.empty()) applyImpulses(dt, forces);
 
   const double gravity = length(worldSettings_.gravity);
+  const MassSums sums = worldSettings_.airResistance > 0.0 ? MassSums::kCompute : MassSums::kSkip;
   VelocityScan velocities =
-      scanVelocities(balls_, masses_, std::numeric_limits<double>::infinity());
+      scanVelocities(balls_, masses_, std::numeric_limits<double>::infinity(), sums);
   int stepsLeft = settings_.substeps;
   int stepsTaken = 0;
   double timeLeft = dt;  // s
@@ -35,8 +37,13 @@ void Box2dAdapter::step(double dt, std::span<const Vec2> forces) {
     if (worldSettings_.airResistance > 0.0) dragLoss_ += prepareDrag(box2dStep, velocities);
 
     world_->Step(box2dStep, settings_.velocityIterations, settings_.positionIterations);
+    // Box2D's continuous collision can give up and leave a ball deep in a wall, or beyond it
+    // (wall_containment.h): it goes back before the next Box2D step or anyone reads it.
+    const Containment contained = containBalls(balls_, masses_, box_, worldSettings_.walls);
+    ballsPutBack_ += contained.ballsPutBack;
+    contacts_.wallImpulse += contained.impulse;
 
-    velocities = scanVelocities(balls_, masses_, capSpeed(static_cast<double>(box2dStep)));
+    velocities = scanVelocities(balls_, masses_, capSpeed(static_cast<double>(box2dStep)), sums);
     translationCapHits_ += velocities.ballsAtCap;
     timeLeft -= static_cast<double>(box2dStep);
     --stepsLeft;

@@ -6,7 +6,7 @@
 namespace fooball::box2d_detail {
 
 VelocityScan scanVelocities(std::span<b2Body* const> balls, std::span<const double> masses,
-                            double capSpeed) {
+                            double capSpeed, MassSums sums) {
   VelocityScan scan;
   double fastestSquared = 0.0;
   const double capSquared = capSpeed * capSpeed;
@@ -15,9 +15,11 @@ VelocityScan scanVelocities(std::span<b2Body* const> balls, std::span<const doub
     const Vec2 velocity{static_cast<double>(v.x), static_cast<double>(v.y)};
     const double speedSquared = lengthSquared(velocity);
     fastestSquared = std::max(fastestSquared, speedSquared);
-    scan.massSpeedSquared += masses[i] * speedSquared;
-    scan.momentum += masses[i] * velocity;
     if (speedSquared >= capSquared) ++scan.ballsAtCap;
+    if (sums == MassSums::kCompute) {
+      scan.massSpeedSquared += masses[i] * speedSquared;
+      scan.momentum += masses[i] * velocity;
+    }
   }
   scan.fastestSpeed = std::sqrt(fastestSquared);
   return scan;

@@ -19,7 +19,11 @@ enum Side { kLeft, kRight, kBottom, kTop, kSideCount };
 /// correction can squeeze a crowded ball in). A ball whose centre crossed a thin wall is pushed
 /// out on the far side and lost. Box2D pushes a ball inside a polygon out through the nearest
 /// face, and a ball moves at most b2_maxTranslation per Box2D step, so with this thickness its
-/// centre stays in the inner half and the nearest face is the one facing into the box.
+/// centre usually stays in the inner half and the nearest face is the one facing into the box.
+/// Not always: a time-of-impact sub-step's position correction can move a ball further, and near
+/// the end of a piece (and in the corners, where two slabs overlap) the nearest face is a piece's
+/// end. The random invariants lost balls that way for good, so containBalls
+/// (wall_containment.h) puts back every ball Box2D leaves beyond a wall after each Box2D step.
 constexpr float kWallThickness = 4.0f * b2_maxTranslation;
 
 /// m. Box2D polygons carry a skin of b2_polygonRadius (1 cm) that collides like the surface

@@ -31,6 +31,13 @@ class Draw {
   int integer(int low, int high) {
     return low + static_cast<int>(next() % static_cast<std::uint64_t>(high - low + 1));
   }
+  /// [low, high], log-uniform: k = low − 1 + j with j = 1, 2, … drawn with probability
+  /// ln(1 + 1/j) / ln(high − low + 2), so every decade of j is equally likely (for [1, 200]:
+  /// 1 one time in 8, 100 or more one in 8).
+  int logInteger(int low, int high) {
+    const double j = logUniform(1.0, static_cast<double>(high - low) + 2.0);
+    return std::min(high, low - 1 + static_cast<int>(j));
+  }
   bool chance(double probability) { return unit() < probability; }
   Vec2 direction() {
     const double angle = uniform(0.0, 2.0 * std::numbers::pi);
@@ -86,12 +93,14 @@ void addBallGroup(Scene& scene, Draw& draw, std::size_t count, double minRadius,
   }
 }
 
-/// Two size classes (the small one down to 1/100 of the big one), so tiny balls meet big
+/// 0–200 balls, the count log-uniform (most cases are small and cheap; one in eight has 100 or
+/// more). Two size classes (the small one down to 1/100 of the big one), so tiny balls meet big
 /// ones; masses spread over six decades around the disk mass, so light balls are struck by
 /// heavy ones.
 void drawBalls(Scene& scene, Draw& draw) {
   const double side = std::min(scene.box.width, scene.box.height);
-  const std::size_t count = draw.chance(0.05) ? 0 : static_cast<std::size_t>(draw.integer(1, 200));
+  const std::size_t count =
+      draw.chance(0.05) ? 0 : static_cast<std::size_t>(draw.logInteger(1, 200));
   const double bigRadius = draw.logUniform(side / 400.0, side / 8.0);
   const double smallRadius = bigRadius * draw.logUniform(0.01, 1.0);
   // m/s: up to 5 box sides per second, so a ball can cross the box in a few steps (faster
@@ -108,28 +117,50 @@ void drawBalls(Scene& scene, Draw& draw) {
 }
 
 /// A third of the time each option keeps its default. Otherwise integer options (substeps,
-/// iterations, threads, switches) go from their minimum up to 15 above it, which covers every
-/// switch and the useful range of counts while bounding the cost of a case; other options go
-/// anywhere in their range.
+/// iterations, threads) go from their minimum up to 15 above it, log-uniform (the minimum about
+/// as often as 8–15 above it), which covers the useful range of counts while bounding the cost;
+/// switches (0/1) are even odds; other options go anywhere in their range.
 std::vector<std::pair<std::string, double>> drawOptions(Draw& draw,
                                                         std::span<const OptionSpec> specs) {
   std::vector<std::pair<std::string, double>> values;
   for (const OptionSpec& spec : specs) {
     double value = spec.defaultValue;
     if (draw.chance(2.0 / 3.0)) {
-      value = spec.integer
-                  ? spec.min + static_cast<double>(draw.integer(
-                                   0, static_cast<int>(std::min(spec.max - spec.min, 15.0))))
-                  : draw.uniform(spec.min, spec.max);
+      const int span = static_cast<int>(std::min(spec.max - spec.min, 15.0));
+      value = !spec.integer ? draw.uniform(spec.min, spec.max)
+              : span <= 1   ? spec.min + static_cast<double>(draw.integer(0, span))
+                            : spec.min + static_cast<double>(draw.logInteger(0, span));
     }
     values.emplace_back(spec.name, value);
   }
   return values;
 }
 
-/// Ball-steps per case, so that the default suite stays within its time budget (two minutes in
-/// Release on two cores).
-constexpr double kBallStepsPerCase = 20'000.0;
+/// The longest run: 400 steps, fewer when a step is dear. A case costs about (balls + c) ×
+/// steps × the options that repeat a step's work: substeps, and elastic's threads. Each worker
+/// thread beyond the first adds a barrier wait to every phase of a substep: ~15 µs on an idle
+/// two-core machine, but up to a scheduler time slice when another process holds the other
+/// core (as under ctest -j2, where the elastic suite took 50 s instead of 5 s), so each counts as
+/// 16 substeps. A case may have at most 20'000 ball-steps and 1'600 steps × substeps × (1 +
+/// 16 × (threads − 1)) (400 steps at the default 4 substeps and one thread). With the steps drawn
+/// log-uniform below that, a case costs ~5 ms on average (the median well under 1 ms) and the
+/// default 2'000 fit the suite's budget (random_invariants_test.cpp), while long runs (few balls
+/// and substeps) and large ones (shorter) stay in the draw: of the default cases 12% have 100
+/// balls or more and 4–9% (by backend) 200 steps or more. Box2D's and the exact solver's cost
+/// also grows with what happens in the run; workCapFor (case_run.cpp) bounds that.
+int maxSteps(const RandomCase& c) {
+  constexpr double kBallSteps = 20'000.0;
+  constexpr double kSubstepSteps = 1'600.0;
+  constexpr double kThreadRepeats = 16.0;
+  double repeats = 1.0;
+  for (const auto& [name, value] : c.options) {
+    if (name == "substeps") repeats *= value;
+    if (name == "threads") repeats *= 1.0 + kThreadRepeats * (value - 1.0);
+  }
+  const double balls = static_cast<double>(std::max<std::size_t>(c.scene.balls.size(), 1));
+  return static_cast<int>(
+      std::clamp(std::min(kBallSteps / balls, kSubstepSteps / repeats), 1.0, 400.0));
+}
 
 void drawEvents(RandomCase& c, Draw& draw) {
   const std::size_t balls = c.scene.balls.size();
@@ -207,8 +238,7 @@ RandomCase drawCase(std::uint64_t seed, std::span<const OptionSpec> options) {
   drawBalls(c.scene, draw);
   c.options = drawOptions(draw, options);
   c.dt = draw.logUniform(1e-4, 0.05);
-  const double balls = static_cast<double>(std::max<std::size_t>(c.scene.balls.size(), 1));
-  c.steps = draw.integer(1, static_cast<int>(std::clamp(kBallStepsPerCase / balls, 1.0, 400.0)));
+  c.steps = draw.logInteger(1, maxSteps(c));
   if (draw.chance(0.5)) drawEvents(c, draw);
   return c;
 }

@@ -57,8 +57,10 @@ struct RandomCase {
 
 /// Draws a case for a backend with the given options: 0–200 balls in boxes of 0.5–200 m, two
 /// size classes up to 100× apart, masses over six decades, speeds up to 5 box sides per second,
-/// gravity up to 1000 m/s², drag, walls, tools, edits and live world changes (random_case.cpp
-/// gives each range and the reason for its limits).
+/// gravity up to 1000 m/s², drag, walls, tools, edits and live world changes, 1–400 steps.
+/// Counts (balls, steps, substeps, iterations, threads) are log-uniform, so most cases are small
+/// and cheap and a few are large (random_case.cpp gives each range and the reason for its
+/// limits).
 RandomCase drawCase(std::uint64_t seed, std::span<const OptionSpec> options);
 
 /// Everything but the balls on one line each (the balls: writeScene(c.scene)).

@@ -74,8 +74,11 @@ void applyScale(QValueAxis* axis, const AxisScale& scale) {
 
 TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
                      const std::deque<ChartMarker>* markers, QWidget* parent)
-    : QChartView(parent),
-      chart_(new QChart),
+    // The chart goes to the view's constructor, which owns it from then on. QChartView(parent)
+    // would make a default chart of its own that a later setChart() takes out of the scene but
+    // leaves to us to delete (30 kB lost per chart, found by LeakSanitizer).
+    : QChartView(new QChart, parent),
+      chart_(QChartView::chart()),
       timeAxis_(new QValueAxis(chart_)),
       valueAxis_(new QValueAxis(chart_)),
       quantities_(std::move(quantities)) {
@@ -104,7 +107,6 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
   styleAxis(valueAxis_, font());
   timeAxis_->setTitleText(tr("time (s)"));
 
-  setChart(chart_);
   setRenderHint(QPainter::Antialiasing);
   setFrameShape(QFrame::NoFrame);
   updateMinimumHeight();
