@@ -171,6 +171,30 @@ TEST_F(ChartPanelTest, TogglesHideQuantitiesAndEmptyCharts) {
   EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), 100);
 }
 
+TEST_F(ChartPanelTest, PlotAreasLineUpSoTheirTimeAxesMatch) {
+  // The value labels differ in width (N·s, J, 1e-12) and only the bottom chart has time labels,
+  // whose last one overhangs the plot on the right: every plot still starts and ends at the
+  // same x, so one time reads the same in every chart.
+  panel.reset({"elastic", "exact"});
+  addRun(panel, 0, 600, 1.0 / 60.0);
+  addRun(panel, 1, 600, 1.0 / 60.0);
+  panel.refresh();
+  QApplication::processEvents();
+  const QList<TimeChart*> charts = panel.findChildren<TimeChart*>();
+  ASSERT_EQ(charts.size(), ChartPanel::kChartCount);
+  const auto plotEdgesOf = [](const TimeChart* chart) {
+    const QRectF plot = chart->chart()->plotArea();
+    return std::pair{chart->mapTo(chart->window(), QPoint{}).x() + plot.left(),
+                     chart->mapTo(chart->window(), QPoint{}).x() + plot.right()};
+  };
+  const auto [left, right] = plotEdgesOf(charts.front());
+  for (const TimeChart* chart : charts) {
+    const auto [chartLeft, chartRight] = plotEdgesOf(chart);
+    EXPECT_NEAR(chartLeft, left, 1.0) << chart->chart()->title().toStdString();
+    EXPECT_NEAR(chartRight, right, 1.0) << chart->chart()->title().toStdString();
+  }
+}
+
 TEST_F(ChartPanelTest, CsvHoldsEveryStoredSampleAndParsesBack) {
   QTemporaryDir directory;
   ASSERT_TRUE(directory.isValid());

@@ -222,20 +222,25 @@ void ChartPanel::applyToggles() {
 }
 
 void ChartPanel::alignPlotAreas() {
-  // Every shown chart's plot starts where the widest value labels need it to.
-  std::optional<double> alignedLeft;
+  // Every shown chart's plot starts where the widest value labels need it to, and ends where the
+  // bottom chart's last time label lets it.
+  std::optional<PlotInsets> aligned;
   for (const TimeChart* chart : charts_) {
-    const std::optional<double> natural = chart->naturalPlotLeft();
+    const std::optional<PlotInsets> natural = chart->naturalPlotInsets();
     if (!chart->showsAnyQuantity() || !natural) continue;
-    alignedLeft = std::max(alignedLeft.value_or(*natural), *natural);
+    const PlotInsets widest = aligned.value_or(*natural);
+    aligned =
+        PlotInsets{std::max(widest.left, natural->left), std::max(widest.right, natural->right)};
   }
-  if (!alignedLeft) return;
+  if (!aligned) return;
   for (TimeChart* chart : charts_) {
-    const std::optional<double> natural = chart->naturalPlotLeft();
+    const std::optional<PlotInsets> natural = chart->naturalPlotInsets();
     if (!chart->showsAnyQuantity() || !natural) continue;
-    const double extra = *alignedLeft - *natural;
+    const PlotInsets extra{aligned->left - natural->left, aligned->right - natural->right};
+    const PlotInsets now = chart->extraMargins();
     // Half a pixel of tolerance, so rounding cannot start a relayout loop.
-    if (std::abs(extra - chart->extraLeftMargin()) >= 0.5) chart->setExtraLeftMargin(extra);
+    if (std::abs(extra.left - now.left) >= 0.5 || std::abs(extra.right - now.right) >= 0.5)
+      chart->setExtraMargins(extra);
   }
 }
 

@@ -113,9 +113,12 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
 
   markerOverlay_ = new MarkerOverlay(chart_, timeAxis_, markers);
   connect(chart_, &QChart::plotAreaChanged, this, [this](const QRectF& plotArea) {
-    // The margins now are the ones this layout used; setExtraLeftMargin() may have changed
-    // extraLeftMargin_ since, for a layout still to come.
-    naturalPlotLeft_ = plotArea.left() - (chart_->margins().left() - kChartMargins.left());
+    // The margins now are the ones this layout used; setExtraMargins() may have changed
+    // extraMargins_ since, for a layout still to come.
+    const QMargins margins = chart_->margins();
+    naturalPlotInsets_ = PlotInsets{
+        plotArea.left() - (margins.left() - kChartMargins.left()),
+        chart_->size().width() - plotArea.right() - (margins.right() - kChartMargins.right())};
     markerOverlay_->plotAreaChanged();
     // Qt elides tick labels that have no room: a plot that shrank gets fewer ticks.
     if (valueTicksFor(plotArea) != valueTicks_) fitValueAxis();
@@ -308,10 +311,11 @@ int TimeChart::visibleMarkerCount() const {
   return markerOverlay_->visibleCount();
 }
 
-void TimeChart::setExtraLeftMargin(double pixels) {
-  extraLeftMargin_ = pixels;
+void TimeChart::setExtraMargins(PlotInsets pixels) {
+  extraMargins_ = pixels;
   QMargins margins = kChartMargins;
-  margins.setLeft(kChartMargins.left() + static_cast<int>(std::lround(pixels)));
+  margins.setLeft(kChartMargins.left() + static_cast<int>(std::lround(pixels.left)));
+  margins.setRight(kChartMargins.right() + static_cast<int>(std::lround(pixels.right)));
   chart_->setMargins(margins);
 }
 

@@ -23,6 +23,12 @@ namespace fooball::gui {
 
 class MarkerOverlay;
 
+/// px on the left and right of a chart's plot area.
+struct PlotInsets {
+  double left = 0.0;
+  double right = 0.0;
+};
+
 /// One chart of the panel: a few quantities of every run against simulated time, on a dark
 /// plot, with the markers over it. It draws what it is given and keeps no samples itself.
 class TimeChart : public QChartView {
@@ -56,12 +62,13 @@ class TimeChart : public QChartView {
   int pointCount(int runIndex) const;
   int visibleMarkerCount() const;
 
-  /// px from the chart's left edge to its plot area's without the extra margin below (the room
-  /// the value axis takes), as of the last layout; none before the first.
-  std::optional<double> naturalPlotLeft() const { return naturalPlotLeft_; }
-  /// Extra left margin (px) that lines this chart's plot area up with its neighbours'.
-  void setExtraLeftMargin(double pixels);
-  double extraLeftMargin() const { return extraLeftMargin_; }
+  /// px from the chart's edges to its plot area's without the extra margins below: on the left
+  /// the room the value axis takes, on the right what the last time label overhangs; as of the
+  /// last layout, none before the first.
+  std::optional<PlotInsets> naturalPlotInsets() const { return naturalPlotInsets_; }
+  /// Extra margins (px) that line this chart's plot area up with its neighbours'.
+  void setExtraMargins(PlotInsets pixels);
+  PlotInsets extraMargins() const { return extraMargins_; }
 
  private:
   struct Curve {
@@ -104,8 +111,8 @@ class TimeChart : public QChartView {
   ValueRange shownValues_;  ///< of the shown curves, as last drawn
   std::optional<AxisScale> valueScale_;
   int valueTicks_ = 0;  ///< tick intervals valueScale_ was chosen for
-  std::optional<double> naturalPlotLeft_;
-  double extraLeftMargin_ = 0.0;
+  std::optional<PlotInsets> naturalPlotInsets_;
+  PlotInsets extraMargins_;
 };
 
 }  // namespace fooball::gui
