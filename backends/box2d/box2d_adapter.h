@@ -71,7 +71,7 @@ class Box2dAdapter final : public Backend {
   std::uint64_t translationCapHits_ = 0;  ///< ball-steps ending at the cap speed
   std::uint64_t substepsRaised_ = 0;      ///< step() calls that auto_substeps lengthened
   std::uint64_t box2dSteps_ = 0;          ///< b2World::Step calls since load()
-  std::uint64_t ballsPutBack_ = 0;        ///< by containBalls since load()
+  std::uint64_t ballsPutBack_ = 0;        ///< by WallContainment since load()
 };
 
 }  // namespace fooball::box2d_detail

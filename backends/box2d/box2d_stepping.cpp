@@ -6,7 +6,6 @@
 #include "box2d_adapter.h"
 #include "linear_damping.h"
 #include "translation_cap.h"
-#include "wall_containment.h"
 
 namespace fooball::box2d_detail {
 
@@ -39,11 +38,11 @@ void Box2dAdapter::step(double dt, std::span<const Vec2> forces) {
     world_->Step(box2dStep, settings_.velocityIterations, settings_.positionIterations);
     // Box2D's continuous collision can give up and leave a ball deep in a wall, or beyond it
     // (wall_containment.h): it goes back before the next Box2D step or anyone reads it.
-    const Containment contained = containBalls(balls_, masses_, box_, worldSettings_.walls);
-    ballsPutBack_ += contained.ballsPutBack;
-    contacts_.wallImpulse += contained.impulse;
-
-    velocities = scanVelocities(balls_, masses_, capSpeed(static_cast<double>(box2dStep)), sums);
+    WallContainment walls(box_, worldSettings_.walls);
+    velocities =
+        scanVelocities(balls_, masses_, capSpeed(static_cast<double>(box2dStep)), sums, &walls);
+    ballsPutBack_ += walls.ballsPutBack();
+    contacts_.wallImpulse += walls.impulse();
     translationCapHits_ += velocities.ballsAtCap;
     timeLeft -= static_cast<double>(box2dStep);
     --stepsLeft;

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "fooball/vec2.h"
+#include "wall_containment.h"
 
 namespace fooball::box2d_detail {
 
@@ -24,8 +25,9 @@ struct VelocityScan {
 enum class MassSums { kSkip, kCompute };
 
 /// `masses` (kg) are the scene's, in the order of `balls`; `capSpeed` in m/s (infinity: count
-/// none). With MassSums::kSkip the sums stay 0.
+/// none). With MassSums::kSkip the sums stay 0. With `walls`, each ball is first put back if
+/// Box2D left it beyond a wall, and scanned with the velocity it then has.
 VelocityScan scanVelocities(std::span<b2Body* const> balls, std::span<const double> masses,
-                            double capSpeed, MassSums sums);
+                            double capSpeed, MassSums sums, WallContainment* walls = nullptr);
 
 }  // namespace fooball::box2d_detail

@@ -22,7 +22,7 @@ enum Side { kLeft, kRight, kBottom, kTop, kSideCount };
 /// centre usually stays in the inner half and the nearest face is the one facing into the box.
 /// Not always: a time-of-impact sub-step's position correction can move a ball further, and near
 /// the end of a piece (and in the corners, where two slabs overlap) the nearest face is a piece's
-/// end. The random invariants lost balls that way for good, so containBalls
+/// end. The random invariants lost balls that way for good, so WallContainment
 /// (wall_containment.h) puts back every ball Box2D leaves beyond a wall after each Box2D step.
 constexpr float kWallThickness = 4.0f * b2_maxTranslation;
 

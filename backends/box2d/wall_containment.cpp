@@ -1,6 +1,7 @@
 #include "wall_containment.h"
 
 #include <cmath>
+#include <limits>
 
 namespace fooball::box2d_detail {
 
@@ -32,23 +33,26 @@ bool containAxis(float& position, float& velocity, double side, bool lowOn, bool
 
 }  // namespace
 
-Containment containBalls(std::span<b2Body* const> balls, std::span<const double> masses,
-                         const Box& box, const Walls& walls) {
-  Containment done;
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    b2Body& ball = *balls[i];
-    b2Vec2 position = ball.GetPosition();
-    b2Vec2 velocity = ball.GetLinearVelocity();
-    const bool x = containAxis(position.x, velocity.x, box.width, walls.left, walls.right,
-                               masses[i], done.impulse);
-    const bool y = containAxis(position.y, velocity.y, box.height, walls.bottom, walls.top,
-                               masses[i], done.impulse);
-    if (!x && !y) continue;
+WallContainment::WallContainment(const Box& box, const Walls& walls) : box_(box), walls_(walls) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  lowest_ = {walls.left ? -kWallSlack : -kNone, walls.bottom ? -kWallSlack : -kNone};
+  highest_ = {walls.right ? box.width + kWallSlack : kNone,
+              walls.top ? box.height + kWallSlack : kNone};
+}
+
+b2Vec2 WallContainment::putBack(b2Body& ball, double mass) {
+  b2Vec2 velocity = ball.GetLinearVelocity();
+  b2Vec2 position = ball.GetPosition();
+  const bool x =
+      containAxis(position.x, velocity.x, box_.width, walls_.left, walls_.right, mass, impulse_);
+  const bool y =
+      containAxis(position.y, velocity.y, box_.height, walls_.bottom, walls_.top, mass, impulse_);
+  if (x || y) {
     ball.SetTransform(position, 0.0f);
     ball.SetLinearVelocity(velocity);
-    ++done.ballsPutBack;
+    ++ballsPutBack_;
   }
-  return done;
+  return velocity;
 }
 
 }  // namespace fooball::box2d_detail

@@ -4,7 +4,6 @@
 #include <box2d/b2_common.h>
 
 #include <cstdint>
-#include <span>
 
 #include "fooball/scene.h"
 
@@ -18,13 +17,7 @@ namespace fooball::box2d_detail {
 /// collision works.
 inline constexpr double kWallSlack = 3.25 * static_cast<double>(b2_linearSlop);
 
-/// What containBalls did.
-struct Containment {
-  std::uint64_t ballsPutBack = 0;
-  double impulse = 0.0;  ///< N·s, Σ|Δp| of the velocities turned back
-};
-
-/// Puts back every ball whose centre lies beyond a wall that is on by more than kWallSlack: its
+/// Puts back a ball whose centre lies beyond a wall that is on by more than kWallSlack: its
 /// centre on the wall's face, the velocity component into the wall reflected, as an elastic wall
 /// would. Box2D's continuous collision gives up in crowds: a time-of-impact sub-step corrects the
 /// positions of the two balls that hit without the walls they do not touch yet, which can push a
@@ -35,8 +28,37 @@ struct Containment {
 /// (wall_bodies.cpp): pushed out through a piece's end or the far side, it is lost. The random
 /// invariants (tests/robustness) found this in 13 of 10'000 cases, all with bullets on: centres
 /// up to 2.5 m beyond a wall, and two balls lost for good (one stuck in a corner of the walls,
-/// one pushed out 12 m beyond them). `masses` (kg) are in the order of `balls`.
-Containment containBalls(std::span<b2Body* const> balls, std::span<const double> masses,
-                         const Box& box, const Walls& walls);
+/// one pushed out 12 m beyond them).
+///
+/// Run by the velocity scan after every Box2D step (velocity_scan.h), in the same pass over the
+/// bodies: a second pass would load every b2Body again.
+class WallContainment {
+ public:
+  WallContainment(const Box& box, const Walls& walls);
+
+  /// Puts `ball` (mass in kg) back if it is beyond a wall; returns its velocity, reflected if so.
+  /// Inline, and only four comparisons for a ball inside: it runs for every ball and Box2D step.
+  b2Vec2 contain(b2Body& ball, double mass) {
+    const b2Vec2& p = ball.GetPosition();
+    const double x = static_cast<double>(p.x);
+    const double y = static_cast<double>(p.y);
+    if (x >= lowest_.x && x <= highest_.x && y >= lowest_.y && y <= highest_.y)
+      return ball.GetLinearVelocity();
+    return putBack(ball, mass);
+  }
+
+  std::uint64_t ballsPutBack() const { return ballsPutBack_; }
+  double impulse() const { return impulse_; }  ///< N·s, Σ|Δp| of the velocities turned back
+
+ private:
+  b2Vec2 putBack(b2Body& ball, double mass);
+
+  Box box_;
+  Walls walls_;
+  Vec2 lowest_;   ///< m, the lowest centre left alone (−∞ where a wall is off)
+  Vec2 highest_;  ///< m, the highest
+  std::uint64_t ballsPutBack_ = 0;
+  double impulse_ = 0.0;
+};
 
 }  // namespace fooball::box2d_detail
