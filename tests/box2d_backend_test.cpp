@@ -168,6 +168,17 @@ TEST(Box2dBackend, FastBallKeepsItsEnergyWhenAutoSubstepsAvoidTheTranslationCap)
   EXPECT_GE(diagnostic(*backend, "box2d_steps"), 30.0);  // ≥ 3 Box2D steps of ≤ 2 m per step
 }
 
+TEST(Box2dBackend, AStopRequestEndsAStepBetweenItsBox2dSteps) {
+  // The GUI asks a step it has given up on to stop; with auto_substeps this one would take
+  // 3,000 / 2 = 1,500 Box2D steps, capped at 1,000.
+  auto backend = loaded(openSpace({ball({100.0, 5.0}, {180'000.0, 0.0})}), {{"substeps", 1.0}});
+  backend->step(1.0 / 60.0, {});
+  EXPECT_EQ(diagnostic(*backend, "box2d_steps"), 1000.0);
+  backend->requestStop();
+  backend->step(1.0 / 60.0, {});
+  EXPECT_EQ(diagnostic(*backend, "box2d_steps"), 1000.0) << "no Box2D step after the request";
+}
+
 TEST(Box2dBackend, TranslationCapSilentlySlowsAFastBallAndIsReported) {
   // Pins the trap the adapter works around: one Box2D step of 1/60 s may move a body 2 m, so
   // Box2D scales 300 m/s down to 120 m/s and 84 % of the kinetic energy disappears.

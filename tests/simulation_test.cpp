@@ -302,6 +302,74 @@ TEST(Simulation, SetBackendKeepsTheStateAndCountersCarryOver) {
   EXPECT_EQ(simulation.metrics().wallCollisions, total.wallCollisions);
 }
 
+// --- stepping in parts (the GUI steps the backend on a thread of its own) -------------------
+
+TEST(Simulation, AStepInPartsIsTheSameStepAsStep) {
+  // The attract tool is on, so the split also carries the forces and books their work.
+  Simulation whole = elasticSimulation(gas(40));
+  Simulation inParts = elasticSimulation(gas(40));
+  for (Simulation* simulation : {&whole, &inParts})
+    simulation->interactions.press({8.0, 4.5}, simulation->balls());
+  for (int i = 0; i < 60; ++i) {
+    whole.step();
+    BackendStep step = inParts.beginStep();
+    EXPECT_TRUE(inParts.stepping());
+    step.run();
+    inParts.finishStep(std::move(step));
+    EXPECT_FALSE(inParts.stepping());
+  }
+  expectSameState(inParts, copyOf(whole.positions()), copyOf(whole.velocities()));
+  EXPECT_EQ(inParts.time(), whole.time());
+  EXPECT_EQ(inParts.metrics().externalWork, whole.metrics().externalWork);
+  EXPECT_EQ(inParts.metrics().energyResidual, whole.metrics().energyResidual);
+  EXPECT_EQ(inParts.counters().ballCollisions, whole.counters().ballCollisions);
+}
+
+TEST(Simulation, WhileAStepIsOutTheStateIsTheOneBeforeIt) {
+  Simulation simulation = elasticSimulation(gas(40));
+  simulation.run(1.0);
+  const auto positions = copyOf(simulation.positions());
+  const auto velocities = copyOf(simulation.velocities());
+  const Metrics before = simulation.metrics();
+  BackendStep step = simulation.beginStep();
+  step.run();
+  // Finished but not taken back: what the window draws meanwhile.
+  expectSameState(simulation, positions, velocities);
+  EXPECT_EQ(simulation.time(), before.time);
+  EXPECT_EQ(simulation.metrics().ballCollisions, before.ballCollisions);
+  simulation.finishStep(std::move(step));
+  EXPECT_NE(copyOf(simulation.positions()), positions);
+  EXPECT_EQ(simulation.time(), before.time + kDt);
+}
+
+TEST(Simulation, AnAbandonedStepLeavesNoTraceAndTheRunGoesOn) {
+  Simulation simulation = elasticSimulation(gas(40));
+  simulation.interactions.press({8.0, 4.5}, simulation.balls());
+  simulation.run(1.0);
+  const auto positions = copyOf(simulation.positions());
+  const auto velocities = copyOf(simulation.velocities());
+  const Metrics before = simulation.metrics();
+  ASSERT_GT(before.ballCollisions, 0u);
+
+  BackendStep step = simulation.beginStep();
+  step.run();  // it finished, but too late: given up all the same
+  simulation.abandonStep(createBackend("elastic"));
+
+  expectSameState(simulation, positions, velocities);
+  const Metrics after = simulation.metrics();
+  EXPECT_EQ(after.time, before.time);
+  EXPECT_EQ(simulation.steps(), 60u);
+  EXPECT_EQ(after.ballCollisions, before.ballCollisions) << "counters carry on, as on a switch";
+  EXPECT_EQ(after.wallImpulse, before.wallImpulse);
+  EXPECT_EQ(after.externalWork, before.externalWork) << "the abandoned kick is not booked";
+  EXPECT_EQ(after.energyResidual, before.energyResidual);
+
+  simulation.run(1.0);  // the new backend steps on, forces and all, and the budget still closes
+  EXPECT_EQ(simulation.steps(), 120u);
+  EXPECT_LE(std::abs(simulation.metrics().energyResidual),
+            1e-9 * std::abs(simulation.metrics().externalWork));
+}
+
 TEST(Simulation, SwitchingToAnyRegisteredBackendKeepsTheState) {
   for (const BackendInfo& info : registeredBackends()) {
     SCOPED_TRACE(std::string(info.name));

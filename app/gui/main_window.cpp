@@ -45,6 +45,8 @@ constexpr double kMaxFrameSeconds = 0.1;  // a stall longer than this is not cau
 /// Charts get a sample every few frames: 20 per second at 60 frames/s is smooth, and keeps
 /// the O(N) metrics (overlap search included) off most frames at 100,000 balls.
 constexpr int kFramesPerSample = 3;
+/// s a step may run in the background before the status bar says how to give it up.
+constexpr double kSlowStepNoticeSeconds = 1.0;
 constexpr int kFramesPerReadout = 6;  // compare readout and inspector: 10 per second
 constexpr int kStatusMessageMs = 8000;
 constexpr int kSidebarWidth = 330;  // px
@@ -654,12 +656,19 @@ void MainWindow::updateStatusBar() {
     backends << runs_->backendName(i);
     costs << QString::number(runs_->stepTiming(i).millisecondsPerStep, 'f', 2);
   }
+  const double stepSeconds = runs_->stepSeconds();
+  if (stepSeconds >= kSlowStepNoticeSeconds) {
+    showStatus(tr("One physics step has taken %1 s so far. Pause (Space) gives it up.")
+                   .arg(stepSeconds, 0, 'f', 1));
+  }
   backendStatus_->setText(backends.join(tr(" vs ")));
   ballsStatus_->setText(tr("%L1 balls").arg(runs_->ballCount()));
   timeStatus_->setText(tr("t = %1 s").arg(runs_->time(), 0, 'f', 2));
   stepsStatus_->setText(tr("%1 steps/s").arg(frameRate_.stepsPerSecond(), 0, 'f', 0));
   framesStatus_->setText(tr("%1 frames/s").arg(frameRate_.framesPerSecond(), 0, 'f', 0));
-  stepCostStatus_->setText(tr("%1 ms/step").arg(costs.join(QStringLiteral(" | "))));
+  stepCostStatus_->setText(runs_->stepping()
+                               ? tr("step running for %1 s").arg(stepSeconds, 0, 'f', 1)
+                               : tr("%1 ms/step").arg(costs.join(QStringLiteral(" | "))));
 }
 
 void MainWindow::updateTitle() {

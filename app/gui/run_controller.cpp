@@ -1,9 +1,7 @@
 #include "run_controller.h"
 
-#include <QElapsedTimer>
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <numbers>
 #include <string>
 #include <thread>
@@ -78,6 +76,7 @@ void RunController::adoptColours() {
 }
 
 void RunController::loadScene(const Scene& scene) {
+  settle();
   loadedScene_ = scene;
   selected_.reset();
   forEachRun([&](Simulation& run) {
@@ -90,6 +89,7 @@ void RunController::loadScene(const Scene& scene) {
 }
 
 void RunController::restart() {
+  settle();
   Scene scene = loadedScene_;
   scene.world = world();
   forEachRun([&](Simulation& run) { run.load(scene); });
@@ -100,6 +100,7 @@ void RunController::restart() {
 }
 
 void RunController::setBackend(int index, const QString& name) {
+  settle();
   const int target = index == kCompareRun && compare_ ? kCompareRun : kMainRun;
   runAt(target).setBackend(createBackend(name.toStdString()));
   backendNames_[static_cast<std::size_t>(target)] = name;
@@ -108,6 +109,7 @@ void RunController::setBackend(int index, const QString& name) {
 }
 
 void RunController::setBackendOption(int index, const QString& name, double value) {
+  settle();
   runAt(index).backend().setOption(name.toStdString(), value);
 }
 
@@ -135,6 +137,7 @@ void RunController::copyToolsTo(Simulation& run) const {
 }
 
 void RunController::startCompare(const QString& name) {
+  settle();
   // Both runs restart their clocks on the current state, so the charts start together.
   const Scene now = main_->scene();
   auto second = makeRun(now, name);
@@ -149,14 +152,17 @@ void RunController::startCompare(const QString& name) {
 }
 
 void RunController::stopCompare() {
+  settle();
   if (!compare_) return;
   compare_.reset();
+  workers_[kCompareRun].reset();
   backendNames_[kCompareRun].clear();
   shareCores();
   emit runsChanged();
 }
 
 void RunController::setWorld(const WorldSettings& world) {
+  settle();
   forEachRun([&](Simulation& run) { run.setWorld(world); });
 }
 
@@ -253,6 +259,7 @@ std::vector<BallDef> RunController::placeNewBalls(const Scene& room, std::size_t
 }
 
 void RunController::setBallCount(std::size_t count) {
+  settle();
   const std::size_t current = ballCount();
   newBallScale_ = 1.0;
   if (count == current) return;
@@ -283,6 +290,7 @@ void RunController::setBallCount(std::size_t count) {
 }
 
 void RunController::setBall(std::size_t index, const BallDef& ball) {
+  settle();
   const BallDef before = this->ball(index);
   main_->setBall(index, ball);
   if (compare_) {
@@ -298,6 +306,7 @@ void RunController::setBall(std::size_t index, const BallDef& ball) {
 }
 
 void RunController::deleteBall(std::size_t index) {
+  settle();
   if (index >= ballCount()) return;
   forEachRun([&](Simulation& run) {
     std::vector<BallDef> balls = run.scene().balls;
@@ -312,6 +321,7 @@ void RunController::deleteBall(std::size_t index) {
 }
 
 void RunController::setPaused(bool paused) {
+  if (paused) settle();  // pausing stops what is shown, including a slow step
   if (paused == paused_) return;
   paused_ = paused;
   accumulator_ = 0.0;
@@ -319,6 +329,7 @@ void RunController::setPaused(bool paused) {
 }
 
 int RunController::advance(double elapsedSeconds, double timeScale) {
+  if (stepping()) return collectSteps(std::chrono::milliseconds(0)) ? 1 : 0;
   if (paused_) return 0;
   const double dt = main_->dt();
   accumulator_ += elapsedSeconds * timeScale;
@@ -326,33 +337,61 @@ int RunController::advance(double elapsedSeconds, double timeScale) {
       std::max(1, static_cast<int>(std::ceil(kMaxStepsPerFramePerTimeScale * timeScale)));
   const int steps = static_cast<int>(std::min(std::floor(accumulator_ / dt), double(maxSteps)));
   accumulator_ = steps == maxSteps ? 0.0 : accumulator_ - steps * dt;
-  stepRuns(steps);
-  return steps;
+  return stepRuns(steps);
 }
 
 void RunController::stepOnce() {
-  stepRuns(1);
+  if (!stepping()) stepRuns(1);
 }
 
-void RunController::stepRuns(int steps) {
-  if (steps <= 0) return;
-  const auto stepTimed = [steps](Simulation& run, StepTiming& timing) {
-    QElapsedTimer clock;
-    clock.start();
-    for (int i = 0; i < steps; ++i)
-      run.step();
-    timing.millisecondsPerStep = static_cast<double>(clock.nsecsElapsed()) * 1e-6 / steps;
-    timing.stepsTaken += static_cast<std::uint64_t>(steps);
-  };
-  if (compare_) {
-    // The runs share nothing, so the compare run steps on a second core meanwhile.
-    auto second =
-        std::async(std::launch::async, [&] { stepTimed(*compare_, timing_[kCompareRun]); });
-    stepTimed(*main_, timing_[kMainRun]);
-    second.get();
-  } else {
-    stepTimed(*main_, timing_[kMainRun]);
+int RunController::stepRuns(int steps) {
+  for (int finished = 0; finished < steps; ++finished) {
+    for (int i = 0; i < runCount(); ++i) {
+      std::unique_ptr<StepWorker>& worker = workers_[static_cast<std::size_t>(i)];
+      if (!worker) worker = std::make_unique<StepWorker>();
+      worker->start(runAt(i).beginStep());
+    }
+    if (!collectSteps(stepPatience_)) {
+      accumulator_ = 0.0;  // a slow step: no catching up after it
+      return finished;
+    }
   }
+  return steps;
+}
+
+bool RunController::collectSteps(std::chrono::milliseconds patience) {
+  const auto deadline = std::chrono::steady_clock::now() + patience;
+  for (int i = 0; i < runCount(); ++i) {
+    if (!workers_[static_cast<std::size_t>(i)]->finishedBy(deadline)) return false;
+  }
+  for (int i = 0; i < runCount(); ++i) {
+    const auto index = static_cast<std::size_t>(i);
+    timing_[index].millisecondsPerStep = workers_[index]->seconds() * 1e3;
+    ++timing_[index].stepsTaken;
+    runAt(i).finishStep(workers_[index]->take());
+  }
+  return true;
+}
+
+void RunController::settle() {
+  if (!stepping() || collectSteps(std::chrono::milliseconds(0))) return;
+  for (int i = 0; i < runCount(); ++i) {
+    const auto index = static_cast<std::size_t>(i);
+    std::unique_ptr<Backend> fresh = createBackend(backendNames_[index].toStdString());
+    const OptionSet& options = workers_[index]->backend().options();
+    for (const OptionSpec& spec : options.specs())
+      fresh->setOption(spec.name, options.value(spec.name));
+    workers_[index].reset();  // gives the step up; the next step gets a new worker
+    runAt(i).abandonStep(std::move(fresh));
+  }
+}
+
+double RunController::stepSeconds() const {
+  double seconds = 0.0;
+  for (const auto& worker : workers_) {
+    if (worker && worker->busy()) seconds = std::max(seconds, worker->seconds());
+  }
+  return seconds;
 }
 
 Divergence RunController::divergence() const {

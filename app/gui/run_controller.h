@@ -4,6 +4,7 @@
 #include <QString>
 #include <QStringList>
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "fooball/interactions.h"
 #include "fooball/scene.h"
 #include "fooball/simulation.h"
+#include "step_worker.h"
 
 namespace fooball::gui {
 
@@ -27,7 +29,7 @@ struct Divergence {
 
 /// Wall-clock cost of the physics, for the status bar.
 struct StepTiming {
-  double millisecondsPerStep = 0.0;  ///< of the last frame that stepped
+  double millisecondsPerStep = 0.0;  ///< of the last step that finished
   std::uint64_t stepsTaken = 0;      ///< steps since the controller was created
 };
 
@@ -35,6 +37,11 @@ struct StepTiming {
 /// same scene on another backend in lockstep (the same number of steps, every frame). Every
 /// edit, world setting, mouse force and ball-count change goes through here, so it reaches both
 /// runs alike.
+///
+/// The backends step on threads of their own (StepWorker). A step that outlasts the patience
+/// (100 ms) is left running and the window goes on drawing the state before it; a later
+/// advance() collects it. Anything that changes a backend meanwhile (pausing, editing, world
+/// settings, switching) first gives the step up, so the runs continue from the state shown.
 class RunController : public QObject {
   Q_OBJECT
 
@@ -109,6 +116,16 @@ class RunController : public QObject {
   void stepOnce();
   StepTiming stepTiming(int index) const { return timing_[static_cast<std::size_t>(index)]; }
 
+  /// How long advance() and stepOnce() wait for a step before leaving it to run in the
+  /// background: long enough for any step that keeps a frame rate, short enough to be a hitch
+  /// rather than a freeze.
+  static constexpr std::chrono::milliseconds kDefaultStepPatience{100};
+  void setStepPatience(std::chrono::milliseconds patience) { stepPatience_ = patience; }
+  /// True while a step runs in the background; the runs show the state before it.
+  bool stepping() const { return workers_[kMainRun] && workers_[kMainRun]->busy(); }
+  /// s the step still running has taken so far (the slower run's), 0 when none.
+  double stepSeconds() const;
+
   /// Zero when not comparing.
   Divergence divergence() const;
 
@@ -131,7 +148,12 @@ class RunController : public QObject {
   /// `count` balls clear of every ball in `room`.
   std::vector<BallDef> placeNewBalls(const Scene& room, std::size_t count, std::uint64_t seed);
   void adoptColours();
-  void stepRuns(int steps);
+  /// Runs `steps` steps of every run; returns how many finished (the last may still be running).
+  int stepRuns(int steps);
+  /// Finishes the runs' steps if all are done within `patience`; false (nothing finished) if not.
+  bool collectSteps(std::chrono::milliseconds patience);
+  /// Gives up a step still running (see the class comment), so the backends are here to change.
+  void settle();
   void restoreSelection();
   template <class Action>
   void forEachRun(Action&& action);
@@ -141,6 +163,8 @@ class RunController : public QObject {
   std::unique_ptr<Simulation> compare_;
   std::array<QString, 2> backendNames_;
   std::array<StepTiming, 2> timing_;
+  std::array<std::unique_ptr<StepWorker>, 2> workers_;  ///< made at the first step of a run
+  std::chrono::milliseconds stepPatience_ = kDefaultStepPatience;
   std::vector<std::uint32_t> colours_;
   std::optional<std::size_t> selected_;
   bool paused_ = false;

@@ -21,7 +21,7 @@ void Box2dAdapter::step(double dt, std::span<const Vec2> forces) {
   double timeLeft = dt;  // s
   float box2dStep = static_cast<float>(dt / stepsLeft);
   bool raised = false;
-  while (stepsLeft > 0) {
+  while (stepsLeft > 0 && !stopRequested()) {
     // Replanned before every Box2D step, since collisions in the last one may have sped a ball
     // up. The Box2D step stays constant otherwise: Box2D's warm starting prefers that.
     if (settings_.autoSubsteps) {

@@ -57,6 +57,7 @@ void Simulation::adoptScene(const Scene& scene) {
 
 void Simulation::refreshState() {
   backend_->readState(positions_, velocities_);
+  backendCounters_ = backend_->counters();
 }
 
 double Simulation::totalEnergy() const {
@@ -65,7 +66,7 @@ double Simulation::totalEnergy() const {
 
 void Simulation::setBackend(std::unique_ptr<Backend> next) {
   next->load(backend_->save());
-  earlierBackends_ = earlierBackends_ + backend_->counters();
+  earlierBackends_ = earlierBackends_ + backendCounters_;
   backend_ = std::move(next);
   refreshState();
 }
@@ -114,7 +115,7 @@ void Simulation::replaceBalls(std::vector<BallDef> balls) {
   const double before = totalEnergy();
   Scene next = scene();
   next.balls = std::move(balls);
-  earlierBackends_ = earlierBackends_ + backend_->counters();
+  earlierBackends_ = earlierBackends_ + backendCounters_;
   backend_->load(next);
   adoptScene(next);
   interactions.forgetBalls();
@@ -131,22 +132,50 @@ void Simulation::setDt(double dt) {
   dt_ = dt;
 }
 
+void BackendStep::run() {
+  backend_->step(dt_, withForces_ ? std::span<const Vec2>(forces_) : std::span<const Vec2>());
+}
+
 void Simulation::step() {
-  if (interactions.active()) {
+  BackendStep step = beginStep();
+  step.run();
+  finishStep(std::move(step));
+}
+
+BackendStep Simulation::beginStep() {
+  BackendStep step;
+  step.dt_ = dt_;
+  step.withForces_ = interactions.active();
+  if (step.withForces_) {
     interactions.forces(balls(), dt_, forces_);
     // The contract applies J = F·dt as a kick at the start of the step, so the work is exact:
     // ΔKE = J·v + |J|²/2m.
     for (std::size_t i = 0; i < ballCount(); ++i) {
       const Vec2 impulse = dt_ * forces_[i];
-      externalWork_ += dot(impulse, velocities_[i] + impulse / (2.0 * masses_[i]));
+      step.work_ += dot(impulse, velocities_[i] + impulse / (2.0 * masses_[i]));
     }
-    backend_->step(dt_, forces_);
-  } else {
-    backend_->step(dt_, {});
   }
+  step.forces_ = std::move(forces_);
+  step.backend_ = std::move(backend_);
+  return step;
+}
+
+void Simulation::finishStep(BackendStep&& done) {
+  backend_ = std::move(done.backend_);
+  forces_ = std::move(done.forces_);
+  externalWork_ += done.work_;
   refreshState();
   ++stepsSinceDtChange_;
   ++steps_;
+}
+
+void Simulation::abandonStep(std::unique_ptr<Backend> fresh) {
+  // positions_ and velocities_ still hold the state from before the step.
+  fresh->load(scene());
+  earlierBackends_ = earlierBackends_ + backendCounters_;
+  backend_ = std::move(fresh);
+  forces_.assign(ballCount(), Vec2{});
+  refreshState();
 }
 
 void Simulation::run(double seconds) {
@@ -174,7 +203,7 @@ int Simulation::advance(double elapsedSeconds, double timeScale, int maxSteps) {
 }
 
 BackendCounters Simulation::counters() const {
-  return earlierBackends_ + backend_->counters();
+  return earlierBackends_ + backendCounters_;
 }
 
 Metrics Simulation::metrics() const {

@@ -5,6 +5,7 @@
 #include <QPoint>
 #include <QStringList>
 #include <QtTest/QTest>
+#include <chrono>
 #include <memory>
 
 #include "fooball/scene.h"
@@ -18,8 +19,8 @@ namespace fooball::gui::testing {
 
 inline constexpr double kFrame = 1.0 / 60.0;  // s, one frame of physics
 
-/// A main window on `scene` that neither reads nor writes the user's settings and records
-/// errors instead of showing message boxes.
+/// A main window on `scene` that neither reads nor writes the user's settings, records errors
+/// instead of showing message boxes, and waits for every step.
 class GuiTest : public ::testing::Test {
  protected:
   void open(const Scene& scene, const QString& backend = QStringLiteral("elastic"),
@@ -33,6 +34,9 @@ class GuiTest : public ::testing::Test {
     window = std::make_unique<MainWindow>(options);
     window->setErrorReporter(
         [this](const QString&, const QString& message) { errors.append(message); });
+    // Every step waited for, as in a headless run, so a test does the same on any machine,
+    // however loaded; slow_step_test.cpp tests the steps left to run in the background.
+    runs().setStepPatience(std::chrono::hours(1));
     window->resize(1280, 800);
     window->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));

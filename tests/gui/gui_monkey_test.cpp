@@ -41,14 +41,15 @@ std::uint64_t environmentNumber(const char* name, std::uint64_t fallback) {
 
 /// 3000 actions take 13–17 s in a Release build, most of it Box2D with up to 1000 balls. The
 /// sanitizers slow the physics about tenfold: 300 balls at most, and 2000 actions take about 9 s.
-/// FOOBALL_MONKEY_ACTIONS soaks longer (this seed meets the Box2D freeze below at action 4000).
+/// FOOBALL_MONKEY_ACTIONS soaks longer (this seed meets a minute-long Box2D step at action 4000).
 const std::uint64_t kDefaultSeed = 20261122;
 const std::uint64_t kDefaultActions = sanitized() ? 2000 : 3000;
 const int kMaxBalls = sanitized() ? 300 : 1000;
 constexpr int kActionsPerBatch = 25;
 /// The inspector's values are typed from ±40 (m, m/s, kg): off the box (refused), overlapping,
-/// fast. Not the fields' far ends (±10⁶ m/s): one ball that fast among a few hundred freezes
-/// Box2D's continuous collision for minutes per step (an open item in docs/accuracy.md).
+/// fast. Not the fields' far ends (±10⁶ m/s): one ball that fast among a few hundred makes
+/// Box2D's continuous collision take minutes per step (docs/accuracy.md), and GuiTest waits for
+/// every step.
 constexpr double kMaxTyped = 40.0;
 
 class GuiMonkey : public GuiTest {

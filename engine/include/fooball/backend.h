@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -81,11 +82,21 @@ class Backend {
     optionsChanged();
   }
 
+  /// Asks a step running on another thread to end as soon as it can. Thread-safe. Only for a
+  /// step whose result nobody will read: the backend is left mid-step and is only fit to be
+  /// destroyed. A backend whose one step can run for seconds (Box2D: up to 1,000 Box2D steps)
+  /// checks stopRequested() between its iterations; the others just finish.
+  void requestStop() { stopRequested_.store(true, std::memory_order_relaxed); }
+
  protected:
   /// Called after any option changed; read options_ here rather than in the step loop.
   virtual void optionsChanged() {}
+  bool stopRequested() const { return stopRequested_.load(std::memory_order_relaxed); }
 
   OptionSet options_;
+
+ private:
+  std::atomic<bool> stopRequested_ = false;
 };
 
 }  // namespace fooball

@@ -13,6 +13,24 @@
 
 namespace fooball {
 
+/// The backend's part of one Simulation step, handed out by Simulation::beginStep() so it can
+/// run on another thread while the driver keeps drawing the simulation. It owns the backend and
+/// the tools' forces until Simulation::finishStep() takes them back.
+class BackendStep {
+ public:
+  /// Steps the backend; on any thread, once.
+  void run();
+  Backend& backend() { return *backend_; }
+
+ private:
+  friend class Simulation;
+  std::unique_ptr<Backend> backend_;
+  std::vector<Vec2> forces_;  // N, one per ball
+  bool withForces_ = false;
+  double dt_ = 0.0;    // s
+  double work_ = 0.0;  // J, done by the forces' kick, booked when the step finishes
+};
+
 /// Drives one backend at a fixed time step: pause and single step, forces from the
 /// interactions, backend switching with nothing lost, counters that survive a switch, and the
 /// energy budget. The GUI and fooball-cli both run scenes through it.
@@ -50,8 +68,20 @@ class Simulation {
   double dt() const { return dt_; }
   void setDt(double dt);
 
-  /// One physics step of dt(), paused or not.
+  /// One physics step of dt(), paused or not: finishStep(beginStep()) with run() between.
   void step();
+  /// A step in three parts, for a driver that steps the backend on another thread and keeps
+  /// reading this simulation meanwhile: beginStep() computes the tools' forces and hands out the
+  /// backend; BackendStep::run() steps it; finishStep() takes it back and reads the new state.
+  /// While a step is out (stepping()), the state, time, counters, metrics and interactions are
+  /// those from before it and may be used; nothing that needs the backend may be called.
+  BackendStep beginStep();
+  void finishStep(BackendStep&& done);
+  /// Gives up the step that is out for good and continues from the state before it on `fresh`,
+  /// a new backend of the same kind and options, as setBackend() would. The abandoned backend
+  /// stays with whoever runs it (ask it to requestStop()).
+  void abandonStep(std::unique_ptr<Backend> fresh);
+  bool stepping() const { return backend_ == nullptr; }
   /// Runs whole steps for `seconds` of simulated time (rounded to whole steps; none when
   /// `seconds` is not a positive finite number).
   void run(double seconds);
@@ -103,6 +133,7 @@ class Simulation {
   double accumulator_ = 0.0;
   std::uint64_t steps_ = 0;
   BackendCounters earlierBackends_;  ///< counters of backends switched away from
+  BackendCounters backendCounters_;  ///< the backend's own, as of the last refreshState()
   double initialEnergy_ = 0.0;
   double externalWork_ = 0.0;  ///< J, by tools, edits and gravity changes
 };
