@@ -667,7 +667,7 @@ void MainWindow::updateStatusBar() {
   stepsStatus_->setText(tr("%1 steps/s").arg(frameRate_.stepsPerSecond(), 0, 'f', 0));
   framesStatus_->setText(tr("%1 frames/s").arg(frameRate_.framesPerSecond(), 0, 'f', 0));
   stepCostStatus_->setText(runs_->stepping()
-                               ? tr("step running for %1 s").arg(stepSeconds, 0, 'f', 1)
+                               ? tr("step: %1 s so far").arg(stepSeconds, 0, 'f', 1)
                                : tr("%1 ms/step").arg(costs.join(QStringLiteral(" | "))));
 }
 
