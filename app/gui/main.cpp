@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QFileInfo>
 #include <QSettings>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 
@@ -23,11 +24,34 @@ constexpr const char* kNoDisplay =
     "fooball: no display found (DISPLAY/WAYLAND_DISPLAY unset). Run the headless simulator "
     "instead: fooball-cli run --preset default\n";
 
-/// A window system to connect to, or the user has chosen a Qt platform themselves.
+constexpr const char* kDisplayUnusable =
+    "fooball: the display could not be used (Qt's message above). Run the headless simulator "
+    "instead: fooball-cli run --preset default\n";
+
+/// A window system to connect to, or the user has chosen a Qt platform themselves (an empty
+/// QT_QPA_PLATFORM chooses nothing: Qt then tries its default, as without it).
 bool displayAvailable() {
   return !qEnvironmentVariableIsEmpty("DISPLAY") ||
          !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
-         qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
+         !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+}
+
+QtMessageHandler qtMessageHandler = nullptr;
+
+/// While QApplication starts: Qt gives up with a fatal message when no platform plugin can start
+/// (a DISPLAY that no server answers). After its message, say what to run instead and end as
+/// for no display at all, rather than abort.
+void pointToHeadlessWhenQtGivesUp(QtMsgType type, const QMessageLogContext& context,
+                                  const QString& message) {
+  if (qtMessageHandler) {
+    qtMessageHandler(type, context, message);
+  } else {
+    std::cerr << qPrintable(qFormatLogMessage(type, context, message)) << '\n';
+  }
+  if (type == QtFatalMsg) {
+    std::cerr << kDisplayUnusable;
+    std::_Exit(2);  // mid-construction: no static destructors
+  }
 }
 
 bool isRegisteredBackend(const QString& name) {
@@ -114,7 +138,9 @@ int main(int argc, char* argv[]) {
     return 2;
   }
 
+  qtMessageHandler = qInstallMessageHandler(pointToHeadlessWhenQtGivesUp);
   QApplication app(argc, argv);
+  qInstallMessageHandler(qtMessageHandler);
   QApplication::setApplicationDisplayName(QStringLiteral("FooBall"));
   try {
     MainWindow window(options);

@@ -4,6 +4,8 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTemporaryDir>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -13,14 +15,17 @@ struct Outcome {
   QString err;
 };
 
-/// Runs the built fooball binary with no display at all, as CI does.
-Outcome runFooball(const QStringList& arguments, bool setPlatform) {
+using Variables = std::vector<std::pair<QString, QString>>;
+const Variables kOffscreen = {{QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen")}};
+
+/// Runs the built fooball binary with no display at all, as CI does, and `variables` set.
+Outcome runFooball(const QStringList& arguments, const Variables& variables) {
   QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
   environment.remove(QStringLiteral("DISPLAY"));
   environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
   environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
-  if (setPlatform)
-    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+  for (const auto& [name, value] : variables)
+    environment.insert(name, value);
   QProcess process;
   process.setProcessEnvironment(environment);
   process.start(QStringLiteral(FOOBALL_GUI_PATH), arguments);
@@ -35,7 +40,7 @@ TEST(FooballBinary, ScreenshotWritesANonEmptyImageWithoutADisplay) {
   const Outcome outcome =
       runFooball({QStringLiteral("--preset"), QStringLiteral("default"), QStringLiteral("--frames"),
                   QStringLiteral("3"), QStringLiteral("--screenshot"), path},
-                 false);
+                 {});
   ASSERT_EQ(outcome.exitCode, 0) << outcome.err.toStdString();
   EXPECT_TRUE(outcome.out.contains(QStringLiteral("mean frame time"))) << outcome.out.toStdString();
   const QImage image(path);
@@ -47,11 +52,23 @@ TEST(FooballBinary, ScreenshotWritesANonEmptyImageWithoutADisplay) {
 }
 
 TEST(FooballBinary, InteractiveRunWithoutADisplaySaysWhatToDoAndExits2) {
-  const Outcome outcome = runFooball({}, false);
+  const Outcome outcome = runFooball({}, {});
   EXPECT_EQ(outcome.exitCode, 2);
   EXPECT_TRUE(outcome.err.startsWith(QStringLiteral("fooball: no display found")))
       << outcome.err.toStdString();
   EXPECT_TRUE(outcome.err.contains(QStringLiteral("fooball-cli run --preset default")));
+}
+
+TEST(FooballBinary, ADisplayThatCannotBeUsedSaysWhatToDoAndExits2) {
+  // A DISPLAY that no server answers (a stale forwarded X session): Qt gives up after its own
+  // message, and fooball adds what to run instead. An empty QT_QPA_PLATFORM chooses nothing.
+  for (const Variables& variables : {Variables{{QStringLiteral("DISPLAY"), QStringLiteral(":77")}},
+                                     Variables{{QStringLiteral("QT_QPA_PLATFORM"), QString()}}}) {
+    const Outcome outcome = runFooball({}, variables);
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.err.toStdString();
+    EXPECT_TRUE(outcome.err.contains(QStringLiteral("fooball-cli run --preset default")))
+        << outcome.err.toStdString();
+  }
 }
 
 TEST(FooballBinary, BadArgumentsGiveOneLineAndExit2) {
@@ -61,7 +78,7 @@ TEST(FooballBinary, BadArgumentsGiveOneLineAndExit2) {
         QStringList{QStringLiteral("--bogus")},
         QStringList{QStringLiteral("--preset"), QStringLiteral("nosuch"),
                     QStringLiteral("--frames"), QStringLiteral("1")}}) {
-    const Outcome outcome = runFooball(arguments, true);
+    const Outcome outcome = runFooball(arguments, kOffscreen);
     EXPECT_EQ(outcome.exitCode, 2) << arguments.join(' ').toStdString();
     EXPECT_EQ(outcome.err.count(QLatin1Char('\n')), 1) << outcome.err.toStdString();
     EXPECT_TRUE(outcome.err.startsWith(QStringLiteral("fooball: error: ")))
