@@ -3,7 +3,6 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QPixmap>
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 
@@ -20,14 +19,12 @@ constexpr double kFrameSeconds = 1.0 / 60.0;  // physics per frame: one frame at
 /// The window size of --frames runs and screenshots, whatever the user's saved layout.
 constexpr int kWidth = 1600;
 constexpr int kHeight = 1000;
-/// Every frame shows its steps, however slow: this is a measurement, not a window to keep
-/// responsive.
-constexpr std::chrono::hours kStepPatience{1};
 
 }  // namespace
 
 int runHeadless(MainWindow& window, int frames, const std::optional<QString>& screenshotPath) {
-  window.runs().setStepPatience(kStepPatience);
+  // Every frame shows its steps: this is a measurement, not a window to keep responsive.
+  window.runs().setStepPatience(RunController::kWaitForEveryStep);
   window.resize(kWidth, kHeight);
   window.show();
   QApplication::processEvents();

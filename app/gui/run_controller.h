@@ -120,6 +120,8 @@ class RunController : public QObject {
   /// background: long enough for any step that keeps a frame rate, short enough to be a hitch
   /// rather than a freeze.
   static constexpr std::chrono::milliseconds kDefaultStepPatience{100};
+  /// For runs that must show every step, however slow (headless measurements, tests): an hour.
+  static constexpr std::chrono::milliseconds kWaitForEveryStep = std::chrono::hours(1);
   void setStepPatience(std::chrono::milliseconds patience) { stepPatience_ = patience; }
   /// True while a step runs in the background; the runs show the state before it.
   bool stepping() const { return workers_[kMainRun] && workers_[kMainRun]->busy(); }

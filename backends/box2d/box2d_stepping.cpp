@@ -21,6 +21,9 @@ void Box2dAdapter::step(double dt, std::span<const Vec2> forces) {
   double timeLeft = dt;  // s
   float box2dStep = static_cast<float>(dt / stepsLeft);
   bool raised = false;
+  // Box2D's continuous collision can give up and leave a ball deep in a wall, or beyond it
+  // (wall_containment.h): it goes back after every Box2D step, before the next or anyone reads it.
+  WallContainment walls(box_, worldSettings_.walls);
   while (stepsLeft > 0 && !stopRequested()) {
     // Replanned before every Box2D step, since collisions in the last one may have sped a ball
     // up. The Box2D step stays constant otherwise: Box2D's warm starting prefers that.
@@ -36,19 +39,16 @@ void Box2dAdapter::step(double dt, std::span<const Vec2> forces) {
     if (worldSettings_.airResistance > 0.0) dragLoss_ += prepareDrag(box2dStep, velocities);
 
     world_->Step(box2dStep, settings_.velocityIterations, settings_.positionIterations);
-    // Box2D's continuous collision can give up and leave a ball deep in a wall, or beyond it
-    // (wall_containment.h): it goes back before the next Box2D step or anyone reads it.
-    WallContainment walls(box_, worldSettings_.walls);
     velocities =
         scanVelocities(balls_, masses_, capSpeed(static_cast<double>(box2dStep)), sums, &walls);
-    ballsPutBack_ += walls.ballsPutBack();
-    contacts_.wallImpulse += walls.impulse();
     translationCapHits_ += velocities.ballsAtCap;
     timeLeft -= static_cast<double>(box2dStep);
     --stepsLeft;
     ++stepsTaken;
   }
   box2dSteps_ += static_cast<std::uint64_t>(stepsTaken);
+  ballsPutBack_ += walls.ballsPutBack();
+  contacts_.wallImpulse += walls.impulse();
   if (raised) ++substepsRaised_;
 }
 

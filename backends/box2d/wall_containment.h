@@ -54,7 +54,6 @@ class WallContainment {
   b2Vec2 putBack(b2Body& ball, double mass);
 
   Box box_;
-  Walls walls_;
   Vec2 lowest_;   ///< m, the lowest centre left alone (−∞ where a wall is off)
   Vec2 highest_;  ///< m, the highest
   std::uint64_t ballsPutBack_ = 0;

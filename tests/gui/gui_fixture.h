@@ -5,7 +5,6 @@
 #include <QPoint>
 #include <QStringList>
 #include <QtTest/QTest>
-#include <chrono>
 #include <memory>
 
 #include "fooball/scene.h"
@@ -36,7 +35,7 @@ class GuiTest : public ::testing::Test {
         [this](const QString&, const QString& message) { errors.append(message); });
     // Every step waited for, as in a headless run, so a test does the same on any machine,
     // however loaded; slow_step_test.cpp tests the steps left to run in the background.
-    runs().setStepPatience(std::chrono::hours(1));
+    runs().setStepPatience(RunController::kWaitForEveryStep);
     window->resize(1280, 800);
     window->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));

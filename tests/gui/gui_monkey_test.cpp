@@ -50,8 +50,6 @@ constexpr int kActionsPerBatch = 25;
 /// The same actions with every step left to run in the background: fewer, as most steps are
 /// given up and the window's work, not the physics, is what they test.
 const std::uint64_t kBackgroundActions = sanitized() ? 500 : 1000;
-/// The patience of a run whose every step the window waits for (GuiTest's).
-constexpr std::chrono::milliseconds kWaitForEveryStep = std::chrono::hours(1);
 /// The inspector's values are typed from ±40 (m, m/s, kg): off the box (refused), overlapping,
 /// fast. Not the fields' far ends (±10⁶ m/s): one ball that fast among a few hundred makes
 /// Box2D's continuous collision take minutes per step (docs/accuracy.md), and GuiTest waits for
@@ -241,7 +239,7 @@ class GuiMonkey : public GuiTest {
     // Running again, the clock, the status bar and the charts move on, every step waited for.
     if (runs().stepping()) pause_->trigger();  // gives the step in flight up
     if (runs().paused()) pause_->trigger();
-    runs().setStepPatience(kWaitForEveryStep);
+    runs().setStepPatience(RunController::kWaitForEveryStep);
     // Enough frames that step for a new chart sample (one every 3); at the slowest speed
     // (0.05×) a frame is a fraction of a step, so up to 300 frames.
     const double before = runs().time();
@@ -281,7 +279,7 @@ class GuiMonkey : public GuiTest {
   /// balls that left then stay out when the walls come back, as the walls only reflect.
   bool ballsMayBeOutside_ = false;
   std::mt19937_64 rng_;
-  std::chrono::milliseconds stepPatience_ = kWaitForEveryStep;
+  std::chrono::milliseconds stepPatience_ = RunController::kWaitForEveryStep;
 
   void runActions(std::uint64_t defaultActions) {
     const std::uint64_t seed = environmentNumber("FOOBALL_MONKEY_SEED", kDefaultSeed);

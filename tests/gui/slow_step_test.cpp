@@ -95,7 +95,8 @@ TEST_F(SlowStep, PausingGivesItUpAndKeepsTheStateShown) {
   BallDef fast = runs().ball(1);
   fast.velocity = {-3.0, 0.0};
   runs().setBall(1, fast);
-  runs().setStepPatience(std::chrono::hours(1));  // a step of the slowed scene, however loaded
+  runs().setStepPatience(
+      RunController::kWaitForEveryStep);  // a step of the slowed scene, however loaded
   runs().stepOnce();
   EXPECT_FALSE(runs().stepping());
   EXPECT_EQ(runs().time(), kFrame);
@@ -113,7 +114,8 @@ TEST_F(SlowStep, SwitchingBackendGivesItUpAndContinuesFromTheStateShown) {
   EXPECT_FALSE(runs().stepping());
   EXPECT_EQ(copyOf(mainRun().positions()), before);
   EXPECT_TRUE(givenUpStepsEnd());
-  runs().setStepPatience(std::chrono::hours(1));  // elastic steps on from there, however loaded
+  runs().setStepPatience(
+      RunController::kWaitForEveryStep);  // elastic steps on from there, however loaded
   frames(1);
   EXPECT_EQ(runs().time(), kFrame);
 }
