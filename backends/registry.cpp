@@ -36,4 +36,15 @@ std::unique_ptr<Backend> createBackend(std::string_view name) {
   throw std::invalid_argument("unknown backend '" + std::string(name) + "' (known: " + known + ")");
 }
 
+std::unique_ptr<Backend> createBackend(const RunSpec& spec) {
+  try {
+    std::unique_ptr<Backend> backend = createBackend(spec.backend);
+    for (const std::string& assignment : spec.assignments)
+      backend->setOptionFromText(assignment);
+    return backend;
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument("run spec '" + spec.text() + "': " + error.what());
+  }
+}
+
 }  // namespace fooball

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "fooball/backend.h"
+#include "fooball/run_spec.h"
 
 namespace fooball {
 
@@ -20,5 +21,9 @@ std::span<const BackendInfo> registeredBackends();
 
 /// Creates the backend called `name`; throws std::invalid_argument listing the known names.
 std::unique_ptr<Backend> createBackend(std::string_view name);
+
+/// Creates the backend `spec` names with its options set (a BackendFactory); throws
+/// std::invalid_argument naming the spec and the reason.
+std::unique_ptr<Backend> createBackend(const RunSpec& spec);
 
 }  // namespace fooball

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "backend_state.h"
+
 // Box2D's state is float: positions and velocities carry ~6e-8 relative rounding per operation,
 // so a velocity of a few m/s that went through a handful of solver operations is good to ~1e-6
 // relative, and tolerances below are stated from that. Collisions are solved when balls already
@@ -56,17 +58,19 @@ void run(Backend& backend, double dt, int steps) {
 }
 
 Vec2 velocityOf(const Backend& backend, std::size_t index) {
-  return backend.save().balls.at(index).velocity;
+  return testing::readState(backend).velocities.at(index);
 }
 
 Vec2 positionOf(const Backend& backend, std::size_t index) {
-  return backend.save().balls.at(index).position;
+  return testing::readState(backend).positions.at(index);
 }
 
-double kineticEnergy(const Backend& backend) {
+/// J, of the balls of `scene` (the masses) as `backend` now moves them.
+double kineticEnergy(const Backend& backend, const Scene& scene) {
+  const std::vector<Vec2> velocities = testing::readState(backend).velocities;
   double energy = 0.0;
-  for (const BallDef& b : backend.save().balls)
-    energy += 0.5 * b.mass * lengthSquared(b.velocity);
+  for (std::size_t i = 0; i < velocities.size(); ++i)
+    energy += 0.5 * scene.balls[i].mass * lengthSquared(velocities[i]);
   return energy;
 }
 
@@ -141,16 +145,17 @@ TEST(Box2dBackend, GlancingBallHitLeavesEqualMassesAtRightAngles) {
   // so the struck ball leaves along it and the striker keeps only its tangential velocity — the
   // two velocities end perpendicular and kinetic energy is kept. Friction (or energy going into
   // spin) would break both.
-  auto backend =
-      loaded(boxScene(16.0, 9.0, {ball({4.0, 4.5}, {2.0, 0.0}), ball({8.0, 4.75}, {0.0, 0.0})}));
+  const Scene scene =
+      boxScene(16.0, 9.0, {ball({4.0, 4.5}, {2.0, 0.0}), ball({8.0, 4.75}, {0.0, 0.0})});
+  auto backend = loaded(scene);
   run(*backend, 1.0 / 240.0, 480);  // they meet at t ≈ 1.5 s; no wall is reached by t = 2 s
 
   const Vec2 striker = velocityOf(*backend, 0);
   const Vec2 struck = velocityOf(*backend, 1);
   ASSERT_EQ(backend->counters().ballCollisions, 1u);
   EXPECT_GT(length(struck), 1.0);
-  EXPECT_NEAR(dot(striker, struck), 0.0, 1e-5);     // m²/s², velocities of ~2 m/s to 1e-6
-  EXPECT_NEAR(kineticEnergy(*backend), 2.0, 1e-5);  // J, ½ · 1 kg · (2 m/s)²
+  EXPECT_NEAR(dot(striker, struck), 0.0, 1e-5);            // m²/s², velocities of ~2 m/s to 1e-6
+  EXPECT_NEAR(kineticEnergy(*backend, scene), 2.0, 1e-5);  // J, ½ · 1 kg · (2 m/s)²
   EXPECT_NEAR(striker.x + struck.x, 2.0, 1e-5);
   EXPECT_NEAR(striker.y + struck.y, 0.0, 1e-5);
 }
@@ -182,13 +187,13 @@ TEST(Box2dBackend, AStopRequestEndsAStepBetweenItsBox2dSteps) {
 TEST(Box2dBackend, TranslationCapSilentlySlowsAFastBallAndIsReported) {
   // Pins the trap the adapter works around: one Box2D step of 1/60 s may move a body 2 m, so
   // Box2D scales 300 m/s down to 120 m/s and 84 % of the kinetic energy disappears.
-  auto backend = loaded(openSpace({ball({100.0, 5.0}, {300.0, 0.0})}),
-                        {{"substeps", 1.0}, {"auto_substeps", 0.0}});
-  const double initialEnergy = kineticEnergy(*backend);
+  const Scene scene = openSpace({ball({100.0, 5.0}, {300.0, 0.0})});
+  auto backend = loaded(scene, {{"substeps", 1.0}, {"auto_substeps", 0.0}});
+  const double initialEnergy = kineticEnergy(*backend, scene);
   run(*backend, 1.0 / 60.0, 10);
 
   EXPECT_NEAR(velocityOf(*backend, 0).x, 120.0, 1e-3);
-  EXPECT_NEAR(kineticEnergy(*backend) / initialEnergy, 0.16, 1e-5);
+  EXPECT_NEAR(kineticEnergy(*backend, scene) / initialEnergy, 0.16, 1e-5);
   EXPECT_GE(diagnostic(*backend, "translation_cap_hits"), 1.0);
   EXPECT_EQ(diagnostic(*backend, "auto_substeps_raised"), 0.0);
 }
@@ -201,28 +206,30 @@ Scene heavyStrikesLight() {
 }
 
 TEST(Box2dBackend, AutoSubstepsLeaveRoomForACollisionToTripleASpeed) {
-  auto backend = loaded(heavyStrikesLight(), {{"substeps", 1.0}});
-  const double initialEnergy = kineticEnergy(*backend);
+  const Scene scene = heavyStrikesLight();
+  auto backend = loaded(scene, {{"substeps", 1.0}});
+  const double initialEnergy = kineticEnergy(*backend, scene);
   run(*backend, 1.0 / 60.0, 30);
 
   ASSERT_EQ(backend->counters().ballCollisions, 1u);
   EXPECT_EQ(diagnostic(*backend, "translation_cap_hits"), 0.0);
   // 1e-5 relative: Box2D's float masses (density·πr²) and ~1e-7 rounding per velocity operation.
-  EXPECT_NEAR(kineticEnergy(*backend) / initialEnergy, 1.0, 1e-5);
+  EXPECT_NEAR(kineticEnergy(*backend, scene) / initialEnergy, 1.0, 1e-5);
   EXPECT_NEAR(velocityOf(*backend, 1).x, 29900.0 / 101.0, 29900.0 / 101.0 * 1e-5);
   EXPECT_NEAR(velocityOf(*backend, 0).x, 9700.0 / 101.0, 9700.0 / 101.0 * 1e-5);
 }
 
 TEST(Box2dBackend, WithoutAutoSubstepsTheStruckBallHitsTheCap) {
   // The same hit in Box2D steps of 1/60 s: 296 m/s would be 4.9 m per step.
-  auto backend = loaded(heavyStrikesLight(), {{"substeps", 1.0}, {"auto_substeps", 0.0}});
-  const double initialEnergy = kineticEnergy(*backend);
+  const Scene scene = heavyStrikesLight();
+  auto backend = loaded(scene, {{"substeps", 1.0}, {"auto_substeps", 0.0}});
+  const double initialEnergy = kineticEnergy(*backend, scene);
   run(*backend, 1.0 / 60.0, 30);
 
   ASSERT_EQ(backend->counters().ballCollisions, 1u);
   EXPECT_GE(diagnostic(*backend, "translation_cap_hits"), 1.0);
   EXPECT_NEAR(velocityOf(*backend, 1).x, 120.0, 1e-3);
-  EXPECT_LT(kineticEnergy(*backend) / initialEnergy, 0.99);
+  EXPECT_LT(kineticEnergy(*backend, scene) / initialEnergy, 0.99);
 }
 
 TEST(Box2dBackend, DragDecaysSpeedExponentiallyAndBooksTheEnergyItTakes) {
@@ -234,13 +241,13 @@ TEST(Box2dBackend, DragDecaysSpeedExponentiallyAndBooksTheEnergyItTakes) {
     Scene scene = openSpace({ball({500.0, 500.0}, {3.0, 4.0})});
     scene.world.airResistance = 2.0;  // 1/s
     auto backend = loaded(scene, {{"substeps", substeps}});
-    const double initialEnergy = kineticEnergy(*backend);
+    const double initialEnergy = kineticEnergy(*backend, scene);
     run(*backend, 1.0 / 60.0, 60);
 
     const double expectedSpeed = 5.0 * std::exp(-2.0);
     EXPECT_NEAR(length(velocityOf(*backend, 0)) / expectedSpeed, 1.0, 1e-4);
     // The booked loss is what the damping took: 1e-5 relative, float rounding of the velocity.
-    EXPECT_NEAR(backend->counters().dragLoss, initialEnergy - kineticEnergy(*backend),
+    EXPECT_NEAR(backend->counters().dragLoss, initialEnergy - kineticEnergy(*backend, scene),
                 1e-5 * initialEnergy);
   }
 }
@@ -391,8 +398,7 @@ TEST(Box2dBackend, SetBallChangesRadiusAndMass) {
       loaded(boxScene(16.0, 9.0, {ball({4.0, 4.5}, {2.0, 0.0}), ball({8.0, 5.6}, {0.0, 0.0})}));
   grown->setBall(0, ball({4.0, 4.5}, {2.0, 0.0}, 0.7, 1.0));
   run(*grown, 1.0 / 240.0, 480);
-  EXPECT_EQ(grown->counters().ballCollisions, 1u);
-  EXPECT_EQ(grown->save().balls[0].radius, 0.7);
+  EXPECT_EQ(grown->counters().ballCollisions, 1u);  // so the radius is 0.7
 
   // A 3 kg striker on a 1 kg ball at rest: v' = (3−1)/4 · 2 = 1 and 2·3/4 · 2 = 3 m/s.
   auto heavier =
@@ -403,27 +409,17 @@ TEST(Box2dBackend, SetBallChangesRadiusAndMass) {
   EXPECT_NEAR(velocityOf(*heavier, 1).x, 3.0, 1e-5);
 }
 
-TEST(Box2dBackend, SaveGivesBackTheScenesMassesRadiiAndColoursExactly) {
-  // Box2D only knows a float radius and a float density; the scene's values must survive.
-  Scene scene =
+TEST(Box2dBackend, ReportsTheNearestFloatsOfTheLoadedState) {
+  // Positions and velocities are Box2D's float state: the nearest floats, widened exactly.
+  const Scene scene =
       boxScene(16.0, 9.0, {{{1.1, 2.2}, {0.3, -0.7}, 0.333333333333, 0.123456789, 0x123456}});
-  scene.name = "exact";
-  scene.world.gravity = {0.0, -1.0};
-  scene.world.airResistance = 0.25;
-  scene.world.walls.top = false;
   auto backend = loaded(scene);
-
-  const Scene saved = backend->save();
-  EXPECT_EQ(saved.name, "exact");
-  EXPECT_EQ(saved.box, scene.box);
-  EXPECT_EQ(saved.world, scene.world);
-  ASSERT_EQ(saved.balls.size(), 1u);
-  EXPECT_EQ(saved.balls[0].radius, 0.333333333333);
-  EXPECT_EQ(saved.balls[0].mass, 0.123456789);
-  EXPECT_EQ(saved.balls[0].color, 0x123456u);
-  // Positions and velocities are Box2D's float state: the nearest floats.
-  EXPECT_EQ(saved.balls[0].position.x, static_cast<double>(static_cast<float>(1.1)));
-  EXPECT_EQ(saved.balls[0].velocity.y, static_cast<double>(static_cast<float>(-0.7)));
+  const testing::State state = testing::readState(*backend);
+  ASSERT_EQ(state.positions.size(), 1u);
+  EXPECT_EQ(state.positions[0].x, static_cast<double>(static_cast<float>(1.1)));
+  EXPECT_EQ(state.positions[0].y, static_cast<double>(static_cast<float>(2.2)));
+  EXPECT_EQ(state.velocities[0].x, static_cast<double>(static_cast<float>(0.3)));
+  EXPECT_EQ(state.velocities[0].y, static_cast<double>(static_cast<float>(-0.7)));
 }
 
 TEST(Box2dBackend, BulletsStopSmallFastBallsTunnellingThroughEachOther) {
@@ -454,10 +450,8 @@ constexpr double kWallSlack = 3.25 * 0.005;
 /// The deepest any centre lies beyond the box's faces, m (0 when every centre is inside).
 double deepestBeyondTheWalls(const Backend& backend, const Box& box) {
   double deepest = 0.0;
-  for (const BallDef& b : backend.save().balls) {
-    deepest = std::max({deepest, -b.position.x, b.position.x - box.width, -b.position.y,
-                        b.position.y - box.height});
-  }
+  for (const Vec2 p : testing::readState(backend).positions)
+    deepest = std::max({deepest, -p.x, p.x - box.width, -p.y, p.y - box.height});
   return deepest;
 }
 

@@ -1,4 +1,4 @@
-// The capacity search (app/cli/measure): doubling then bisection on a cost function, its limits,
+// The capacity search (app/shared/measure): doubling then bisection on a cost function, its limits,
 // the CSV of `fooball-cli capacity`, and one real run on a small scale.
 
 #include "capacity.h"

@@ -688,22 +688,5 @@ TEST(ExactBackend, CutShortStepsPutBallsBackOnTheWallsWithoutGainingEnergy) {
   EXPECT_LE(final, initial + 1e-8);
 }
 
-TEST(ExactBackend, SaveHandsBackTheStateAtTheStepBoundary) {
-  Scene scene = randomGas(50, 0.3, 0.3, 21);
-  auto backend = makeExactBackend();
-  backend->load(scene);
-  run(*backend, 0.1, 7);
-  const Scene saved = backend->save();
-  const State state = readState(*backend);
-  ASSERT_EQ(saved.balls.size(), scene.balls.size());
-  for (std::size_t i = 0; i < saved.balls.size(); ++i) {
-    EXPECT_EQ(saved.balls[i].position, state.positions[i]);
-    EXPECT_EQ(saved.balls[i].velocity, state.velocities[i]);
-    EXPECT_EQ(saved.balls[i].color, scene.balls[i].color);
-  }
-  EXPECT_EQ(saved.box, scene.box);
-  EXPECT_EQ(saved.world, scene.world);
-}
-
 }  // namespace
 }  // namespace fooball

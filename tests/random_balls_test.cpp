@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -12,7 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "fooball/cell_grid.h"
 #include "fooball/scene_file.h"
 
 namespace fooball {
@@ -54,21 +54,24 @@ std::string addError(Scene scene, const RandomBalls& random) {
   return "(no error)";
 }
 
-/// Pairs of balls closer than their radii allow, found through the engine's cell grid: O(N).
+/// Pairs of balls closer than their radii allow, found by sweeping along x: balls sorted by
+/// the left edge of their reach, each compared only with those whose reach starts before its own
+/// ends. O(N log N) for the spread-out balls here.
 std::size_t overlappingPairs(const std::vector<BallDef>& balls) {
-  std::vector<Vec2> positions;
-  double maxRadius = 0.0;
-  for (const BallDef& ball : balls) {
-    positions.push_back(ball.position);
-    maxRadius = std::max(maxRadius, ball.radius);
-  }
-  CellGrid grid;
-  grid.build(positions, 16.0, 9.0, 2.0 * maxRadius);
+  std::vector<std::size_t> order(balls.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  const auto left = [&](std::size_t i) { return balls[i].position.x - balls[i].radius; };
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return left(a) < left(b); });
   std::size_t pairs = 0;
-  grid.forEachNearbyPair([&](std::uint32_t a, std::uint32_t b) {
-    const double reach = balls[a].radius + balls[b].radius;
-    if (length(balls[a].position - balls[b].position) < reach - kRounding) ++pairs;
-  });
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const BallDef& a = balls[order[i]];
+    for (std::size_t j = i + 1; j < order.size() && left(order[j]) < a.position.x + a.radius; ++j) {
+      const BallDef& b = balls[order[j]];
+      if (length(a.position - b.position) < a.radius + b.radius - kRounding) ++pairs;
+    }
+  }
   return pairs;
 }
 

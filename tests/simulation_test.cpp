@@ -1,8 +1,8 @@
-// The Simulation driver with real backends from the registry: time keeping, pause and real-time
-// driving, loading, backend switching, ball edits and the energy budget. The elastic backend is
-// the reference here because its free flight (with gravity and drag) is integrated exactly and
-// its collision impulses conserve energy exactly, so the budget must close to rounding; any
-// larger residual is a booking error of the driver, not a method error.
+// The Simulation driver with real backends from the registry: time keeping (real-time driving
+// is the run group's: run_group_test.cpp), loading, backend switching, ball edits and the energy
+// budget. The elastic backend is the reference here because its free flight (with gravity and drag)
+// is integrated exactly and its collision impulses conserve energy exactly, so the budget must
+// close to rounding; any larger residual is a booking error of the driver, not a method error.
 
 #include "fooball/simulation.h"
 
@@ -71,6 +71,14 @@ std::vector<Vec2> copyOf(std::span<const Vec2> values) {
   return {values.begin(), values.end()};
 }
 
+/// The positions the backend itself reports (readState), not the driver's copy of them.
+std::vector<Vec2> backendPositions(const Backend& backend) {
+  std::vector<Vec2> positions(backend.ballCount());
+  std::vector<Vec2> velocities(backend.ballCount());
+  backend.readState(positions, velocities);
+  return positions;
+}
+
 // --- time ---------------------------------------------------------------------------------
 
 TEST(Simulation, TimeIsAWholeNumberOfStepsTimesDtExactly) {
@@ -124,78 +132,6 @@ TEST(Simulation, SetDtRejectsNonPositiveAndNonFiniteSteps) {
   EXPECT_EQ(simulation.dt(), kDt);
 }
 
-// --- pause and real-time driving ------------------------------------------------------------
-
-TEST(Simulation, PausedAdvanceRunsNoStepsButStepStillSingleSteps) {
-  Simulation simulation = elasticSimulation(threeBalls());
-  simulation.paused = true;
-  const auto positions = copyOf(simulation.positions());
-  EXPECT_EQ(simulation.advance(1.0, 1.0, 100), 0);
-  EXPECT_EQ(simulation.steps(), 0u);
-  EXPECT_EQ(simulation.time(), 0.0);
-  EXPECT_EQ(simulation.positions()[0], positions[0]);
-
-  simulation.step();
-  EXPECT_EQ(simulation.steps(), 1u);
-  EXPECT_EQ(simulation.time(), kDt);
-  EXPECT_NE(simulation.positions()[0], positions[0]);
-
-  // The second spent paused is not owed afterwards: no burst of catch-up steps.
-  simulation.paused = false;
-  EXPECT_EQ(simulation.advance(0.5 * kDt, 1.0, 100), 0);
-  EXPECT_EQ(simulation.steps(), 1u);
-}
-
-TEST(Simulation, AdvanceAccumulatesFractionalFrames) {
-  Simulation simulation = elasticSimulation(threeBalls());
-  // 0.7 of a step per frame: the accumulator holds 0.7, 1.4 → 1 step, 1.1 → 1 step, 0.8.
-  EXPECT_EQ(simulation.advance(0.7 * kDt, 1.0, 100), 0);
-  EXPECT_EQ(simulation.advance(0.7 * kDt, 1.0, 100), 1);
-  EXPECT_EQ(simulation.advance(0.7 * kDt, 1.0, 100), 1);
-  EXPECT_EQ(simulation.advance(0.7 * kDt, 1.0, 100), 0);
-  EXPECT_EQ(simulation.steps(), 2u);
-  EXPECT_EQ(simulation.time(), 2.0 * kDt);
-  // Time scale: 0.8 left + 1 frame at 2.5× = 3.3 steps.
-  EXPECT_EQ(simulation.advance(kDt, 2.5, 100), 3);
-  EXPECT_EQ(simulation.steps(), 5u);
-  // 0.3 left + a frame at 0.5× = 0.8: nothing yet.
-  EXPECT_EQ(simulation.advance(kDt, 0.5, 100), 0);
-}
-
-TEST(Simulation, AdvanceCapsAtMaxStepsAndDropsTheRest) {
-  Simulation simulation = elasticSimulation(threeBalls());
-  // A 10.5-step stall capped at 3: three steps now, and the other 7.5 are dropped, not owed.
-  EXPECT_EQ(simulation.advance(10.5 * kDt, 1.0, 3), 3);
-  EXPECT_EQ(simulation.steps(), 3u);
-  EXPECT_EQ(simulation.advance(0.6 * kDt, 1.0, 3), 0);
-  EXPECT_EQ(simulation.steps(), 3u);
-  EXPECT_EQ(simulation.advance(0.6 * kDt, 1.0, 3), 1);
-  EXPECT_EQ(simulation.time(), 4.0 * kDt);
-}
-
-TEST(Simulation, AdvanceKeepsRealTimeWhenTheCapIsNotExceeded) {
-  // Frames of 1.8 steps with a cap of 2 steps per frame: the machine keeps up, so simulated
-  // time must follow real time (180 steps in 100 frames, give or take the one step still in
-  // the accumulator). Only a backlog beyond the cap may be dropped, never the fraction of a
-  // step that is simply not due yet.
-  Simulation simulation = elasticSimulation(threeBalls());
-  int stepsRun = 0;
-  for (int frame = 0; frame < 100; ++frame)
-    stepsRun += simulation.advance(1.8 * kDt, 1.0, 2);
-  EXPECT_EQ(static_cast<std::uint64_t>(stepsRun), simulation.steps());
-  EXPECT_GE(simulation.steps(), 179u);
-  EXPECT_LE(simulation.steps(), 180u);
-}
-
-TEST(Simulation, AdvanceWithANegativeElapsedTimeRunsNothing) {
-  // A clock that steps back must not make advance() report negative steps, nor bank a debt
-  // that swallows the next frames.
-  Simulation simulation = elasticSimulation(threeBalls());
-  EXPECT_EQ(simulation.advance(-1.0, 1.0, 100), 0);
-  EXPECT_EQ(simulation.steps(), 0u);
-  EXPECT_EQ(simulation.advance(1.2 * kDt, 1.0, 100), 1);
-}
-
 /// Forwards to a real backend but refuses to step more than `limit` times, so a runaway loop in
 /// the driver fails the test at once instead of hanging it.
 class StepLimitedBackend final : public Backend {
@@ -203,7 +139,6 @@ class StepLimitedBackend final : public Backend {
   StepLimitedBackend(std::unique_ptr<Backend> inner, int limit)
       : Backend({}), inner_(std::move(inner)), stepsLeft_(limit) {}
   void load(const Scene& scene) override { inner_->load(scene); }
-  Scene save() const override { return inner_->save(); }
   void setWorld(const WorldSettings& world) override { inner_->setWorld(world); }
   void step(double dt, std::span<const Vec2> forces) override {
     if (--stepsLeft_ < 0) throw std::runtime_error("runaway: more steps than the test allows");
@@ -273,6 +208,29 @@ TEST(Simulation, LoadResetsTimeCountersAndTheEnergyBudget) {
   EXPECT_EQ(simulation.world(), scene.world) << "the loaded scene's world, not the edited one";
   EXPECT_EQ(simulation.velocities()[0], (Vec2{-1.0, 3.0}));
   EXPECT_EQ(fresh.sums.totalEnergy(), totalEnergyOf(scene));
+}
+
+TEST(Simulation, LoadAtAStartTimeKeepsTheClockGoingAndStartsTheRestAgain) {
+  // A run group that restarts its runs identical mid-run (synchronise) loads them at its time.
+  Simulation simulation = elasticSimulation(threeBalls());
+  simulation.run(5.0);
+  ASSERT_GT(simulation.counters().wallCollisions, 0u);
+  const Scene now = simulation.scene();
+  simulation.setDt(0.01);
+  simulation.load(now, 5.0);
+  EXPECT_EQ(simulation.time(), 5.0);
+  EXPECT_EQ(simulation.steps(), 0u);
+  EXPECT_EQ(simulation.dt(), 0.01) << "the step stays";
+  EXPECT_EQ(simulation.counters().wallCollisions, 0u);
+  EXPECT_EQ(simulation.metrics().time, 5.0);
+  EXPECT_EQ(simulation.metrics().energyResidual, 0.0);
+  for (std::size_t i = 0; i < now.balls.size(); ++i)
+    EXPECT_EQ(simulation.positions()[i], now.balls[i].position) << "ball " << i;
+  simulation.step();
+  simulation.step();
+  EXPECT_EQ(simulation.time(), 5.0 + 2.0 * 0.01) << "start time + steps · dt, exactly";
+  simulation.load(now);
+  EXPECT_EQ(simulation.time(), 0.0) << "the default start is 0";
 }
 
 TEST(Simulation, SetBackendKeepsTheStateAndCountersCarryOver) {
@@ -472,7 +430,6 @@ TEST(Simulation, GravityChangeIsBookedAsExternalWork) {
   world.gravity = {0.0, -9.81};
   simulation.setWorld(world);
   EXPECT_EQ(simulation.world(), world);
-  EXPECT_EQ(simulation.backend().save().world, world);
   // PE jumps from 0 to Σ m·9.81·y, and that jump is work done on the balls by the user.
   double potential = 0.0;
   for (const BallDef& b : scene.balls)
@@ -576,7 +533,7 @@ TEST(Simulation, SetBallRejectsAnInvalidBallAndLeavesTheStateUnchanged) {
       EXPECT_EQ(now.balls[i].mass, state.balls[i].mass) << "ball " << i;
     }
     EXPECT_EQ(simulation.metrics().externalWork, metrics.externalWork);
-    EXPECT_EQ(simulation.backend().save().balls[0].position, state.balls[0].position)
+    EXPECT_EQ(backendPositions(simulation.backend())[0], state.balls[0].position)
         << "the backend was not touched";
   }
 
@@ -653,10 +610,10 @@ TEST(Simulation, SceneReturnsTheCurrentStateWithColoursAndMasses) {
     EXPECT_EQ(now.balls[i].mass, original.balls[i].mass);
     EXPECT_EQ(now.balls[i].color, original.balls[i].color);
   }
-  // And it is what the backend itself saves.
-  const Scene saved = simulation.backend().save();
+  // And it is the state the backend itself reports.
+  const std::vector<Vec2> reported = backendPositions(simulation.backend());
   for (std::size_t i = 0; i < now.balls.size(); ++i)
-    EXPECT_EQ(saved.balls[i].position, now.balls[i].position);
+    EXPECT_EQ(reported[i], now.balls[i].position);
 }
 
 TEST(Simulation, MetricsAgreeWithTheMetricFunctionsAndCounters) {

@@ -1,10 +1,11 @@
-// The speed/accuracy trade-off (app/cli/measure): the Pareto front, the settings grid, the CSV
+// The speed/accuracy trade-off (app/shared/measure): the Pareto front, the settings grid, the CSV
 // of `fooball-cli tradeoff`, and a short real run against the exact backend.
 
 #include "tradeoff.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -62,14 +63,23 @@ TEST(TradeoffCsv, HasTheDesignsColumnsThenTheErrorsAndTheFronts) {
 
 TEST(TradeoffGrid, VariesSubstepsAndIterationsWhereABackendHasThem) {
   const std::vector<TradeoffSetting> grid = tradeoffGrid(registeredBackends());
-  const auto count = [&](std::string_view backend) {
-    return std::count_if(grid.begin(), grid.end(),
-                         [&](const TradeoffSetting& s) { return s.backend == backend; });
-  };
-  EXPECT_EQ(count("elastic"), 7);  // substeps 1 … 64
-  EXPECT_EQ(count("box2d"), 21);   // × velocity iterations 2, 8, 32
-  EXPECT_EQ(count("exact"), 1);    // its defaults
-  EXPECT_EQ(settingsText(grid.front()), "substeps=1");
+  for (const BackendInfo& info : registeredBackends()) {
+    const auto backend = info.create();
+    const OptionSpec* substeps = backend->options().withRole(OptionRole::Substeps);
+    const bool iterations = backend->options().withRole(OptionRole::Iterations) != nullptr;
+    // substeps 1 … 64, × iterations 2, 8, 32; without substeps, its defaults
+    const long expected = substeps == nullptr ? 1 : iterations ? 21 : 7;
+    EXPECT_EQ(std::count_if(grid.begin(), grid.end(),
+                            [&](const TradeoffSetting& s) { return s.backend == info.name; }),
+              expected)
+        << info.name;
+    const auto first = std::find_if(
+        grid.begin(), grid.end(), [&](const TradeoffSetting& s) { return s.backend == info.name; });
+    ASSERT_NE(first, grid.end()) << info.name;
+    if (substeps != nullptr) {
+      EXPECT_EQ(first->options.front(), substeps->name + "=1") << info.name;
+    }
+  }
   EXPECT_EQ(settingsText({"exact", {}}), "defaults");
   EXPECT_EQ(settingsText({"box2d", {"substeps=2", "velocity_iterations=8"}}),
             "substeps=2 velocity_iterations=8");

@@ -8,6 +8,7 @@
 #include "chosen_backends.h"
 #include "failure_map.h"
 #include "failure_map_chart.h"
+#include "fooball/number_text.h"
 #include "number_text.h"
 #include "progress_line.h"
 #include "run_setup.h"
@@ -71,8 +72,8 @@ void writeCsv(const std::filesystem::path& path, const std::vector<SweepPoint>& 
   for (const SweepPoint& point : points) {
     const SweepSpec& spec = failure_map::findSweep(point.sweep);
     csv << point.sweep << ',' << point.backend << ',' << point.variant << ',' << spec.parameterName
-        << ',' << roundTripText(point.parameter) << ',' << spec.errorName << ','
-        << roundTripText(point.error) << ',' << roundTripText(point.maxOverlap) << ','
+        << ',' << exactNumberText(point.parameter) << ',' << spec.errorName << ','
+        << exactNumberText(point.error) << ',' << exactNumberText(point.maxOverlap) << ','
         << (point.passed ? "pass" : "fail") << '\n';
   }
   csv.close();

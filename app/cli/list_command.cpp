@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "fooball/number_text.h"
 #include "fooball/presets.h"
-#include "number_text.h"
 #include "registry.h"
 #include "run_options.h"
 #include "text_table.h"
@@ -14,8 +14,8 @@ namespace fooball::cli {
 namespace {
 
 std::string rangeText(const OptionSpec& spec) {
-  return std::string(spec.integer ? "integer" : "number") + " in [" + roundTripText(spec.min) +
-         ", " + roundTripText(spec.max) + "]";
+  return std::string(spec.integer ? "integer" : "number") + " in [" + exactNumberText(spec.min) +
+         ", " + exactNumberText(spec.max) + "]";
 }
 
 void printBackends(std::ostream& out) {
@@ -36,7 +36,7 @@ void printBackends(std::ostream& out) {
     const auto specs = backend->options().specs();
     if (specs.empty()) table.addLine("      (no options)");
     for (const OptionSpec& spec : specs) {
-      table.addRow({spec.name, "default " + roundTripText(spec.defaultValue), rangeText(spec),
+      table.addRow({spec.name, "default " + exactNumberText(spec.defaultValue), rangeText(spec),
                     spec.description});
     }
   }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "capacity_command.h"
+#include "compare_command.h"
 #include "failure_map_command.h"
 #include "fooball/scene_error.h"
 #include "list_command.h"
@@ -80,6 +81,59 @@ void readRunFlags(const RunFlags& flags, RunOptions& options) {
   if (flags.substepsFlag->count() > 0) options.substeps = flags.substeps;
   if (flags.metricsFlag->count() > 0) options.metricsPath = flags.metricsPath;
   if (flags.saveFlag->count() > 0) options.savePath = flags.savePath;
+}
+
+/// Declares `compare`'s flags; the ones without a default are read back by readCompareFlags.
+struct CompareFlags {
+  std::string scenePath;
+  double dt = 0.0;
+  std::string csvPath;
+  std::string chartPath;
+  CLI::Option* sceneFlag = nullptr;
+  CLI::Option* dtFlag = nullptr;
+  CLI::Option* csvFlag = nullptr;
+  CLI::Option* chartFlag = nullptr;
+};
+
+void addCompareFlags(CLI::App& compare, CompareOptions& options, CompareFlags& flags) {
+  flags.sceneFlag =
+      compare.add_option("--scene", flags.scenePath, "scene file (JSON) to run")->type_name("FILE");
+  compare.add_option("--preset", options.presetName, "built-in scene to run (see 'list')")
+      ->type_name("NAME")
+      ->capture_default_str()
+      ->excludes(flags.sceneFlag);
+  compare
+      .add_option("--run", options.runs,
+                  "a run: NAME[:KEY=VALUE[,KEY=VALUE]...], 2 to 8 times; the first is the "
+                  "reference")
+      ->type_name("SPEC")
+      ->allow_extra_args(false);
+  compare.add_option("--duration", options.duration, "simulated time to run, in seconds")
+      ->type_name("SECONDS")
+      ->capture_default_str();
+  flags.dtFlag = compare
+                     .add_option("--dt", flags.dt,
+                                 "physics time step in seconds (default: the engine's fixed step)")
+                     ->type_name("SECONDS");
+  compare.add_option("--every", options.every, "steps between CSV rows")
+      ->type_name("N")
+      ->capture_default_str();
+  compare.add_flag("--baseline", options.baseline,
+                   "add the chaos baseline: run 0 with every ball moved 1e-9 m");
+  flags.csvFlag = compare.add_option("--csv", flags.csvPath, "write one row per run per sample")
+                      ->type_name("FILE");
+  flags.chartFlag = compare
+                        .add_option("--chart", flags.chartPath,
+                                    "draw divergence and energy residual against time (PNG)")
+                        ->type_name("FILE.png");
+  compare.add_flag("--quiet", options.quiet, "print no table and no progress");
+}
+
+void readCompareFlags(const CompareFlags& flags, CompareOptions& options) {
+  if (flags.sceneFlag->count() > 0) options.scenePath = flags.scenePath;
+  if (flags.dtFlag->count() > 0) options.dt = flags.dt;
+  if (flags.csvFlag->count() > 0) options.csvPath = flags.csvPath;
+  if (flags.chartFlag->count() > 0) options.chartPath = flags.chartPath;
 }
 
 /// Declares `capacity`'s flags; the optional paths are read back by readCapacityFlags.
@@ -219,6 +273,8 @@ int main(int argc, char** argv) {
   app.footer("Exit codes: 0 ok, 2 bad arguments or bad scene, 1 any other failure.");
   CLI::App* list = app.add_subcommand("list", "list the backends with their options, and presets");
   CLI::App* run = app.add_subcommand("run", "run a scene and report energy and momentum");
+  CLI::App* compare = app.add_subcommand(
+      "compare", "run several methods on one scene in lockstep and measure how they diverge");
   CLI::App* capacity = app.add_subcommand(
       "capacity", "find how many balls each backend steps within a frame budget");
   CLI::App* tradeoff =
@@ -229,6 +285,9 @@ int main(int argc, char** argv) {
   RunOptions runOptions;
   RunFlags runFlags;
   addRunFlags(*run, runOptions, runFlags);
+  CompareOptions compareOptions;
+  CompareFlags compareFlags;
+  addCompareFlags(*compare, compareOptions, compareFlags);
   CapacityOptions capacityOptions;
   CapacityFlags capacityFlags;
   addCapacityFlags(*capacity, capacityOptions, capacityFlags);
@@ -252,6 +311,9 @@ int main(int argc, char** argv) {
   try {
     if (list->parsed()) {
       printList(std::cout);
+    } else if (compare->parsed()) {
+      readCompareFlags(compareFlags, compareOptions);
+      compareCommand(compareOptions, std::cout);
     } else if (capacity->parsed()) {
       readCapacityFlags(capacityFlags, capacityOptions);
       capacityCommand(capacityOptions, std::cout);

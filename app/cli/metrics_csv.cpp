@@ -4,7 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "number_text.h"
+#include "fooball/number_text.h"
 #include "usage_error.h"
 
 namespace fooball::cli {
@@ -22,7 +22,7 @@ MetricsCsv::MetricsCsv(const std::filesystem::path& path)
 void MetricsCsv::writeRow(const Metrics& metrics) {
   row_.clear();
   const auto addNumber = [this](double value) {
-    row_ += roundTripText(value);
+    row_ += exactNumberText(value);
     row_ += ',';
   };
   addNumber(metrics.time);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "fooball/number_text.h"
 #include "fooball/presets.h"
 #include "fooball/scene_file.h"
 #include "number_text.h"
@@ -16,15 +17,8 @@ namespace {
 
 void checkPositiveFinite(double value, const std::string& flag) {
   if (!(std::isfinite(value) && value > 0.0)) {
-    throw UsageError(flag + ": must be a finite number > 0 (got " + roundTripText(value) + ")");
+    throw UsageError(flag + ": must be a finite number > 0 (got " + exactNumberText(value) + ")");
   }
-}
-
-bool hasOption(const Backend& backend, std::string_view name) {
-  for (const OptionSpec& spec : backend.options().specs()) {
-    if (spec.name == name) return true;
-  }
-  return false;
 }
 
 std::string optionNamesText(const Backend& backend) {
@@ -59,11 +53,11 @@ void checkRunNumbers(const RunOptions& options) {
 std::uint64_t stepCount(double duration, double dt) {
   const double steps = std::round(duration / dt);
   if (steps < 1.0) {
-    throw UsageError("--duration " + roundTripText(duration) + " s is less than half a step (dt " +
-                     roundTripText(dt) + " s)");
+    throw UsageError("--duration " + exactNumberText(duration) +
+                     " s is less than half a step (dt " + exactNumberText(dt) + " s)");
   }
   if (steps > static_cast<double>(kMaxRunSteps)) {
-    throw UsageError("--duration " + roundTripText(duration) + " s at dt " + roundTripText(dt) +
+    throw UsageError("--duration " + exactNumberText(duration) + " s at dt " + exactNumberText(dt) +
                      " s is " + readableText(steps) + " steps, more than the limit of " +
                      std::to_string(kMaxRunSteps));
   }
@@ -73,12 +67,13 @@ std::uint64_t stepCount(double duration, double dt) {
 std::unique_ptr<Backend> configuredBackend(const RunOptions& options) {
   std::unique_ptr<Backend> backend = createBackend(options.backendName);
   if (options.substeps) {
-    if (!hasOption(*backend, "substeps")) {
+    const OptionSpec* substeps = backend->options().withRole(OptionRole::Substeps);
+    if (substeps == nullptr) {
       throw UsageError("--substeps: backend '" + options.backendName +
-                       "' has no 'substeps' option (" + optionNamesText(*backend) + ")");
+                       "' has no substeps option (" + optionNamesText(*backend) + ")");
     }
     applyOption(*backend, options, "--substeps " + *options.substeps,
-                "substeps=" + *options.substeps);
+                substeps->name + "=" + *options.substeps);
   }
   for (const std::string& assignment : options.assignments) {
     applyOption(*backend, options, "--option " + assignment, assignment);
@@ -100,7 +95,7 @@ std::vector<std::string> changedOptions(const Backend& backend) {
   std::vector<std::string> changed;
   for (const OptionSpec& spec : backend.options().specs()) {
     const double value = backend.options().value(spec.name);
-    if (value != spec.defaultValue) changed.push_back(spec.name + "=" + roundTripText(value));
+    if (value != spec.defaultValue) changed.push_back(spec.name + "=" + exactNumberText(value));
   }
   return changed;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "fooball/run_group.h"
 #include "fooball/scene.h"
 #include "registry.h"
 
@@ -14,12 +15,38 @@ namespace {
 const QStringList kShowItems{QStringLiteral("temperature"), QStringLiteral("vectors"),
                              QStringLiteral("centre-of-mass"), QStringLiteral("side-by-side")};
 
-void checkBackend(const QString& name) {
+/// A run spec whose backend and options exist (by making the backend once).
+RunSpec checkedRunSpec(const QString& text) {
   try {
-    createBackend(name.toStdString());
+    RunSpec spec = parseRunSpec(text.toStdString());
+    createBackend(spec);
+    return spec;
   } catch (const std::invalid_argument& error) {
     throw UsageError(error.what());
   }
+}
+
+/// Pixels each way: a window smaller than the layout's minimum or larger than any screen is a
+/// mistake, not a wish.
+constexpr int kMinWindowSide = 320;
+constexpr int kMaxWindowSide = 16384;
+
+QSize parseSize(const QString& text) {
+  const QStringList parts = text.split(QLatin1Char('x'));
+  bool widthOk = false;
+  bool heightOk = false;
+  const int width = parts.size() == 2 ? parts[0].toInt(&widthOk) : 0;
+  const int height = parts.size() == 2 ? parts[1].toInt(&heightOk) : 0;
+  if (!widthOk || !heightOk || width < kMinWindowSide || height < kMinWindowSide ||
+      width > kMaxWindowSide || height > kMaxWindowSide) {
+    throw UsageError(QStringLiteral("--size: expected WIDTHxHEIGHT in pixels, each from %1 to %2 "
+                                    "(got '%3')")
+                         .arg(kMinWindowSide)
+                         .arg(kMaxWindowSide)
+                         .arg(text)
+                         .toStdString());
+  }
+  return {width, height};
 }
 
 long long parseCount(const QString& text, const QString& option, long long minimum,
@@ -41,16 +68,19 @@ long long parseCount(const QString& text, const QString& option, long long minim
 
 QString usageText() {
   return QStringLiteral(
-      "Usage: fooball [--scene FILE | --preset NAME] [--backend NAME] [--compare NAME]\n"
-      "               [--balls N] [--show ITEM,...] [--attractor X,Y]...\n"
+      "Usage: fooball [--scene FILE | --preset NAME] [--backend SPEC] [--compare SPEC]...\n"
+      "               [--size WxH] [--balls N] [--show ITEM,...] [--attractor X,Y]...\n"
       "               [--frames N] [--screenshot FILE.png]\n"
       "\n"
       "FooBall: bouncing balls on interchangeable physics backends, side by side.\n"
       "\n"
       "  --scene FILE       open a scene file (JSON)\n"
       "  --preset NAME      start on a built-in scene (fooball-cli list shows them)\n"
-      "  --backend NAME     physics backend of the main run\n"
-      "  --compare NAME     start in compare mode with a second backend\n"
+      "  --backend SPEC     run 0's method: NAME[:KEY=VALUE[,KEY=VALUE]...], e.g.\n"
+      "                     elastic:substeps=16 (fooball-cli list shows backends, options)\n"
+      "  --compare SPEC     start in compare mode with one more run of SPEC (repeatable,\n"
+      "                     up to 7); every run steps the same scene in lockstep\n"
+      "  --size WxH         the window's size in pixels, e.g. 1440x900\n"
       "  --balls N          add or remove balls after loading, like the ball spinner\n"
       "  --show ITEM,...    turn on drawing options: temperature, vectors, centre-of-mass,\n"
       "                     side-by-side (compare layout)\n"
@@ -66,8 +96,9 @@ CommandLine parseCommandLine(const QStringList& arguments) {
   parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
   const QCommandLineOption scene(QStringLiteral("scene"), QString(), QStringLiteral("FILE"));
   const QCommandLineOption preset(QStringLiteral("preset"), QString(), QStringLiteral("NAME"));
-  const QCommandLineOption backend(QStringLiteral("backend"), QString(), QStringLiteral("NAME"));
-  const QCommandLineOption compare(QStringLiteral("compare"), QString(), QStringLiteral("NAME"));
+  const QCommandLineOption backend(QStringLiteral("backend"), QString(), QStringLiteral("SPEC"));
+  const QCommandLineOption compare(QStringLiteral("compare"), QString(), QStringLiteral("SPEC"));
+  const QCommandLineOption size(QStringLiteral("size"), QString(), QStringLiteral("WxH"));
   const QCommandLineOption balls(QStringLiteral("balls"), QString(), QStringLiteral("N"));
   const QCommandLineOption frames(QStringLiteral("frames"), QString(), QStringLiteral("N"));
   const QCommandLineOption screenshot(QStringLiteral("screenshot"), QString(),
@@ -76,7 +107,7 @@ CommandLine parseCommandLine(const QStringList& arguments) {
   const QCommandLineOption attractor(QStringLiteral("attractor"), QString(), QStringLiteral("X,Y"));
   const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")});
   parser.addOptions(
-      {scene, preset, backend, compare, balls, frames, screenshot, show, attractor, help});
+      {scene, preset, backend, compare, size, balls, frames, screenshot, show, attractor, help});
 
   if (!parser.parse(arguments)) throw UsageError(parser.errorText().toStdString());
   if (!parser.positionalArguments().isEmpty()) {
@@ -97,10 +128,15 @@ CommandLine parseCommandLine(const QStringList& arguments) {
   line.sceneFile = single(scene);
   line.preset = single(preset);
   if (line.sceneFile && line.preset) throw UsageError("--scene and --preset exclude each other");
-  line.backend = single(backend);
-  if (line.backend) checkBackend(*line.backend);
-  line.compare = single(compare);
-  if (line.compare) checkBackend(*line.compare);
+  if (const auto text = single(backend)) line.backend = checkedRunSpec(*text);
+  const QStringList compares = parser.values(compare);
+  if (compares.size() > qsizetype(RunGroup::kMaxRuns - 1)) {
+    throw UsageError("--compare: at most " + std::to_string(RunGroup::kMaxRuns - 1) +
+                     " compare runs (got " + std::to_string(compares.size()) + ")");
+  }
+  for (const QString& text : compares)
+    line.compare.push_back(checkedRunSpec(text));
+  if (const auto text = single(size)) line.size = parseSize(*text);
   if (const auto text = single(balls)) {
     line.balls = static_cast<std::size_t>(
         parseCount(*text, QStringLiteral("balls"), 0, static_cast<long long>(kMaxBalls)));

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QSize>
 #include <QString>
 #include <QStringList>
 #include <cstddef>
@@ -7,19 +8,21 @@
 #include <stdexcept>
 #include <vector>
 
+#include "fooball/run_spec.h"
 #include "fooball/vec2.h"
 
 namespace fooball::gui {
 
-/// `fooball [--scene FILE | --preset NAME] [--backend NAME] [--compare NAME] [--balls N]
-///          [--show ITEM,…] [--attractor X,Y]… [--frames N] [--screenshot FILE.png]`
+/// `fooball [--scene FILE | --preset NAME] [--backend SPEC] [--compare SPEC]… [--size WxH]
+///          [--balls N] [--show ITEM,…] [--attractor X,Y]… [--frames N] [--screenshot FILE.png]`
 /// (DESIGN.md, "fooball (GUI)"; --balls, --show and --attractor are extras for benchmarks and
 /// reproducible screenshots).
 struct CommandLine {
   std::optional<QString> sceneFile;
   std::optional<QString> preset;
-  std::optional<QString> backend;
-  std::optional<QString> compare;
+  std::optional<RunSpec> backend;    ///< run 0's
+  std::vector<RunSpec> compare;      ///< the other runs, in order (at most 7)
+  std::optional<QSize> size;         ///< px, the window's
   std::optional<std::size_t> balls;  ///< ball count after loading, like the spinner
   std::optional<int> frames;         ///< run this many frames, print the mean frame time, exit
   std::optional<QString> screenshot;

@@ -1,8 +1,7 @@
 #include "compare_readout.h"
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
-#include <QVBoxLayout>
 #include <cmath>
 
 #include "charts/chart_panel.h"
@@ -13,6 +12,7 @@ namespace {
 
 /// Four significant digits, exponent only when the value is very small or very large.
 QString figure(double value) {
+  if (!std::isfinite(value)) return QStringLiteral("—");
   const double magnitude = std::abs(value);
   if (magnitude != 0.0 && (magnitude < 1e-3 || magnitude >= 1e5)) {
     return QString::number(value, 'e', 2);
@@ -24,71 +24,140 @@ QString signedFigure(double value) {
   return (value > 0.0 ? QStringLiteral("+") : QString()) + figure(value);
 }
 
+const QString kNoFigure = QStringLiteral("—");
+
+QLabel* cell(const QString& text, const char* role, const QString& toolTip) {
+  auto* label = new QLabel(text);
+  label->setProperty("role", role);
+  label->setToolTip(toolTip);
+  return label;
+}
+
 }  // namespace
 
-CompareReadout::CompareReadout(QWidget* parent) : QFrame(parent), runs_(new QLabel) {
+CompareReadout::CompareReadout(QWidget* parent)
+    : QFrame(parent), grid_(new QGridLayout(this)), reference_(new QLabel) {
   setObjectName(QStringLiteral("compareReadout"));
-  setStyleSheet(QStringLiteral(
-      "#compareReadout { background: #1c1e25; border-bottom: 1px solid #2c303a; }"
-      "#compareReadout QLabel { color: #e8eaf0; }"
-      "#compareReadout QLabel[role=\"caption\"] { color: #9aa0ae; font-size: 8pt; }"
-      "#compareReadout QLabel[role=\"value\"] { font-size: 11pt; font-weight: 600; }"));
-  runs_->setTextFormat(Qt::RichText);
-  runs_->setToolTip(tr("Both runs start from the same state and get the same forces and edits"));
+  setStyleSheet(
+      QStringLiteral("#compareReadout { background: #1c1e25; border-bottom: 1px solid #2c303a; }"
+                     "#compareReadout QLabel { color: #e8eaf0; font-size: 9pt; }"
+                     "#compareReadout QLabel[role=\"caption\"] { color: #9aa0ae; font-size: 8pt; }"
+                     "#compareReadout QLabel[role=\"baseline\"] { color: #9e9e9e; }"));
+  grid_->setContentsMargins(14, 4, 14, 4);
+  grid_->setHorizontalSpacing(22);
+  grid_->setVerticalSpacing(1);
 
-  auto* layout = new QHBoxLayout(this);
-  layout->setContentsMargins(14, 6, 14, 6);
-  layout->setSpacing(22);
-  layout->addWidget(runs_);
-  layout->addStretch(1);
-  rms_ = addTile(tr("RMS position difference"),
-                 tr("√(mean over balls of |p_compare − p_main|²): how far the runs have drifted "
-                    "apart on average"));
-  max_ = addTile(tr("Largest position difference"),
-                 tr("The ball whose two copies are furthest apart"));
-  energy_ = addTile(tr("Energy difference"),
-                    tr("Total energy of the compare run minus the main run's, and relative to "
-                       "the main run's"));
-  momentum_ = addTile(tr("Momentum difference"), tr("|p_compare − p_main| of the total momenta"));
-  showDivergence({});
+  reference_->setProperty("role", "caption");
+  reference_->setTextFormat(Qt::RichText);
+  reference_->setToolTip(
+      tr("Every run starts from the same state and gets the same forces and edits as run 0: any "
+         "difference is the method's"));
+  grid_->addWidget(reference_, 0, 0);
+  const auto addCaption = [this](int column, const QString& caption, const QString& toolTip) {
+    QLabel* label = cell(caption, "caption", toolTip);
+    grid_->addWidget(label, 0, column, Qt::AlignRight);
+  };
+  addCaption(1, tr("RMS Δposition"),
+             tr("√(mean over balls of |p_run − p_run 0|²): how far the run has drifted from run 0 "
+                "on average"));
+  addCaption(2, tr("largest Δposition"), tr("The ball furthest from its copy in run 0"));
+  addCaption(3, tr("energy difference"),
+             tr("Total energy of the run minus run 0's, and relative to run 0's"));
+  addCaption(4, tr("momentum difference"), tr("|P_run − P_run 0| of the total momenta"));
+  grid_->setColumnStretch(5, 1);  // the table keeps to the left; the strip's rest is empty
+  showRuns({}, false);
 }
 
-QLabel* CompareReadout::addTile(const QString& caption, const QString& toolTip) {
-  auto* tile = new QWidget;
-  tile->setToolTip(toolTip);
-  auto* tileLayout = new QVBoxLayout(tile);
-  tileLayout->setContentsMargins(0, 0, 0, 0);
-  tileLayout->setSpacing(0);
-  auto* captionLabel = new QLabel(caption);
-  captionLabel->setProperty("role", "caption");
-  auto* value = new QLabel;
-  value->setProperty("role", "value");
-  value->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  tileLayout->addWidget(captionLabel);
-  tileLayout->addWidget(value);
-  static_cast<QHBoxLayout*>(layout())->addWidget(tile);
-  return value;
+void CompareReadout::clearRows() {
+  for (Row& row : rows_) {
+    for (QLabel* label : {row.name, row.rms, row.max, row.energy, row.momentum}) {
+      grid_->removeWidget(label);
+      delete label;
+    }
+  }
+  rows_.clear();
 }
 
-void CompareReadout::showRuns(const QString& mainBackend, const QString& compareBackend) {
-  runs_->setText(
-      tr("<span style='font-size:12pt'><span style='color:%1'>●</span> <b>%2</b> "
-         "<span style='color:#9aa0ae'>vs</span> <span style='color:%3'>○</span> <b>%4</b></span>")
-          .arg(ChartPanel::runColour(0).name(), mainBackend.toHtmlEscaped(),
-               ChartPanel::runColour(1).name(), compareBackend.toHtmlEscaped()));
+CompareReadout::Row CompareReadout::addRow(int gridRow, const QString& label,
+                                           const QString& nameHtml, const QString& toolTip,
+                                           const char* role) {
+  Row row;
+  row.label = label;
+  row.name = cell(nameHtml, role, toolTip);
+  row.name->setTextFormat(Qt::RichText);
+  grid_->addWidget(row.name, gridRow, 0);
+  QLabel** figures[] = {&row.rms, &row.max, &row.energy, &row.momentum};
+  for (int column = 0; column < 4; ++column) {
+    QLabel* value = cell(kNoFigure, role, toolTip);
+    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    grid_->addWidget(value, gridRow, column + 1, Qt::AlignRight);
+    *figures[column] = value;
+  }
+  return row;
 }
 
-void CompareReadout::showDivergence(const Divergence& divergence) {
-  rms_->setText(figure(divergence.rmsPositionDifference) + tr(" m"));
-  max_->setText(figure(divergence.maxPositionDifference) + tr(" m"));
-  energy_->setText(signedFigure(divergence.energyDifference) + tr(" J  (") +
-                   signedFigure(100.0 * divergence.relativeEnergyDifference) + tr(" %)"));
-  momentum_->setText(figure(divergence.momentumDifference) + tr(" N·s"));
+void CompareReadout::showRuns(const QStringList& labels, bool baseline) {
+  if (rowsBuilt_ && labels == labels_ && baseline == baselineShown_) return;
+  rowsBuilt_ = true;
+  labels_ = labels;
+  baselineShown_ = baseline;
+  clearRows();
+
+  const QString referenceLabel = labels.isEmpty() ? QString() : labels.front();
+  reference_->setText(tr("difference from <span style='color:%1'>●</span> <b>%2</b> (run 0)")
+                          .arg(ChartPanel::runColour(0).name(), referenceLabel.toHtmlEscaped()));
+  int gridRow = 1;
+  for (int run = 1; run < labels.size(); ++run) {
+    const QString html = QStringLiteral("<span style='color:%1'>●</span> %2")
+                             .arg(ChartPanel::runColour(run).name(), labels[run].toHtmlEscaped());
+    const QString toolTip =
+        tr("Run %1, %2, against run 0, %3").arg(run).arg(labels[run], referenceLabel);
+    rows_.push_back(addRow(gridRow++, labels[run], html, toolTip, "value"));
+  }
+  if (baseline) {
+    const QString toolTip =
+        tr("Run 0 with every ball moved 1e-9 m: a run whose divergence stays near this line is as "
+           "close to run 0 as chaos allows");
+    const QString html = QStringLiteral("<span style='color:%1'>╌</span> %2")
+                             .arg(ChartPanel::baselineColour().name(), tr("chaos baseline"));
+    rows_.push_back(addRow(gridRow++, tr("chaos baseline"), html, toolTip, "baseline"));
+  }
+}
+
+void CompareReadout::showFigures(Row& row, const std::optional<fooball::Divergence>& divergence) {
+  if (!divergence) {
+    for (QLabel* label : {row.rms, row.max, row.energy, row.momentum})
+      label->setText(kNoFigure);
+    return;
+  }
+  row.rms->setText(figure(divergence->rmsPositionDifference) + tr(" m"));
+  row.max->setText(figure(divergence->maxPositionDifference) + tr(" m"));
+  row.energy->setText(signedFigure(divergence->energyDifference) + tr(" J (") +
+                      signedFigure(100.0 * divergence->relativeEnergyDifference) + tr(" %)"));
+  row.momentum->setText(figure(divergence->momentumDifference) + tr(" N·s"));
+}
+
+void CompareReadout::showDivergences(const std::vector<fooball::Divergence>& fromRunZero,
+                                     const std::optional<fooball::Divergence>& baseline) {
+  const std::size_t runRows = rows_.size() - (baselineShown_ ? 1 : 0);
+  for (std::size_t i = 0; i < runRows; ++i) {
+    const std::size_t run = i + 1;
+    showFigures(rows_[i], run < fromRunZero.size()
+                              ? std::optional<fooball::Divergence>(fromRunZero[run])
+                              : std::nullopt);
+  }
+  if (baselineShown_) showFigures(rows_.back(), baseline);
 }
 
 QString CompareReadout::text() const {
-  return QStringLiteral("RMS %1, max %2, energy %3, momentum %4")
-      .arg(rms_->text(), max_->text(), energy_->text(), momentum_->text());
+  QStringList lines;
+  lines.append(tr("difference from %1 (run 0)").arg(labels_.isEmpty() ? QString() : labels_[0]));
+  for (const Row& row : rows_) {
+    lines.append(tr("%1: RMS %2, max %3, energy %4, momentum %5")
+                     .arg(row.label, row.rms->text(), row.max->text(), row.energy->text(),
+                          row.momentum->text()));
+  }
+  return lines.join(QLatin1Char('\n'));
 }
 
 }  // namespace fooball::gui

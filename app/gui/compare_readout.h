@@ -1,36 +1,66 @@
 #pragma once
 
 #include <QFrame>
+#include <QString>
+#include <QStringList>
+#include <optional>
+#include <vector>
 
-#include "run_controller.h"
+#include "fooball/divergence.h"
 
+class QGridLayout;
 class QLabel;
 
 namespace fooball::gui {
 
-/// The strip above the view in compare mode: which backends run, and how far they have
-/// diverged — RMS and largest position difference over all balls, and the energy and momentum
-/// differences. Same scene, same forces: any difference is the methods'.
+/// The strip above the view in compare mode: a compact table of how far every run has diverged
+/// from run 0 — RMS and largest position difference over balls of the same index, energy
+/// difference (J and relative to run 0's) and momentum difference — one row per run k ≥ 1 with
+/// its label in its run colour, and a grey row for the chaos baseline when it runs. Same scene,
+/// same forces: any difference is the methods', or chaos (the baseline row says how much).
 class CompareReadout : public QFrame {
   Q_OBJECT
 
  public:
   explicit CompareReadout(QWidget* parent = nullptr);
 
-  QString text() const;  ///< all figures as one line of plain text
+  /// All figures as plain text, one line per row ("label: RMS …, max …, energy …, momentum …"),
+  /// after a first line naming run 0.
+  QString text() const;
 
  public slots:
-  void showRuns(const QString& mainBackend, const QString& compareBackend);
-  void showDivergence(const Divergence& divergence);
+  /// The runs' labels (index = run index; [0] is the reference) and whether the baseline runs.
+  /// Rebuilds the rows only when these changed, so calling it on every change is cheap. The
+  /// figures read "—" until the next showDivergences().
+  void showRuns(const QStringList& labels, bool baseline);
+  /// Each run's divergence from run 0 (index = run index; [0] is run 0's own and not shown) and
+  /// the baseline's. A run without a figure, or the baseline without one, reads "—".
+  void showDivergences(const std::vector<fooball::Divergence>& fromRunZero,
+                       const std::optional<fooball::Divergence>& baseline);
 
  private:
-  QLabel* addTile(const QString& caption, const QString& toolTip);
+  /// One row of the table: a run k ≥ 1, or the baseline.
+  struct Row {
+    QString label;
+    QLabel* name = nullptr;
+    QLabel* rms = nullptr;
+    QLabel* max = nullptr;
+    QLabel* energy = nullptr;
+    QLabel* momentum = nullptr;
+  };
 
-  QLabel* runs_;
-  QLabel* rms_;
-  QLabel* max_;
-  QLabel* energy_;
-  QLabel* momentum_;
+  /// `role` styles the row's cells ("value", or "baseline" for its grey).
+  Row addRow(int gridRow, const QString& label, const QString& nameHtml, const QString& toolTip,
+             const char* role);
+  static void showFigures(Row& row, const std::optional<fooball::Divergence>& divergence);
+  void clearRows();
+
+  QGridLayout* grid_;
+  QLabel* reference_;  ///< the header's first cell: which run the differences are from
+  QStringList labels_;
+  bool baselineShown_ = false;
+  bool rowsBuilt_ = false;  ///< showRuns() has run
+  std::vector<Row> rows_;   ///< runs 1 … n−1, then the baseline's when shown
 };
 
 }  // namespace fooball::gui

@@ -16,16 +16,17 @@ namespace fooball::gui {
 namespace {
 
 constexpr double kFrameSeconds = 1.0 / 60.0;  // physics per frame: one frame at 60 Hz
-/// The window size of --frames runs and screenshots, whatever the user's saved layout.
-constexpr int kWidth = 1600;
-constexpr int kHeight = 1000;
+/// The window size of --frames runs and screenshots without --size, whatever the user's saved
+/// layout.
+constexpr QSize kDefaultSize{1600, 1000};
 
 }  // namespace
 
-int runHeadless(MainWindow& window, int frames, const std::optional<QString>& screenshotPath) {
+int runHeadless(MainWindow& window, int frames, const std::optional<QString>& screenshotPath,
+                const std::optional<QSize>& size) {
   // Every frame shows its steps: this is a measurement, not a window to keep responsive.
   window.runs().setStepPatience(RunController::kWaitForEveryStep);
-  window.resize(kWidth, kHeight);
+  window.resize(size.value_or(kDefaultSize));
   window.show();
   QApplication::processEvents();
 
@@ -42,8 +43,8 @@ int runHeadless(MainWindow& window, int frames, const std::optional<QString>& sc
   const RunController& runs = window.runs();
   std::cout << std::fixed << std::setprecision(2) << "fooball: mean frame time " << meanMs
             << " ms (" << 1000.0 / meanMs << " frames/s) over " << frames << " frames, "
-            << runs.ballCount() << " balls, "
-            << runs.backendNames().join(QStringLiteral(" vs ")).toStdString() << '\n';
+            << runs.group().ballCount() << " balls, "
+            << runs.labels().join(QStringLiteral(" vs ")).toStdString() << '\n';
 
   if (screenshotPath) {
     window.updateStatusBar();

@@ -54,11 +54,9 @@ void pointToHeadlessWhenQtGivesUp(QtMsgType type, const QMessageLogContext& cont
   }
 }
 
-bool isRegisteredBackend(const QString& name) {
+bool isRegisteredBackend(const std::string& name) {
   for (const BackendInfo& info : registeredBackends()) {
-    if (name == QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size()))) {
-      return true;
-    }
+    if (name == info.name) return true;
   }
   return false;
 }
@@ -86,16 +84,15 @@ StartupOptions startupOptions(const CommandLine& line, bool remember) {
     options.presetName = name;
     options.sourceName = name;
   }
-  options.backend =
-      QString::fromUtf8(registeredBackends().front().name.data(),
-                        static_cast<qsizetype>(registeredBackends().front().name.size()));
+  RunSpec reference{std::string(registeredBackends().front().name), {}};
   if (line.backend) {
-    options.backend = *line.backend;
+    reference = *line.backend;
   } else if (remember) {
-    const QString remembered = settings.value("run/backend").toString();
-    if (isRegisteredBackend(remembered)) options.backend = remembered;
+    const std::string remembered = settings.value("run/backend").toString().toStdString();
+    if (isRegisteredBackend(remembered)) reference.backend = remembered;
   }
-  options.compare = line.compare.value_or(QString());
+  options.runs = {reference};
+  options.runs.insert(options.runs.end(), line.compare.begin(), line.compare.end());
   options.balls = line.balls;
   options.show = line.show;
   options.attractors = line.attractors;
@@ -144,7 +141,9 @@ int main(int argc, char* argv[]) {
   QApplication::setApplicationDisplayName(QStringLiteral("FooBall"));
   try {
     MainWindow window(options);
-    if (line.headless()) return runHeadless(window, line.frames.value_or(1), line.screenshot);
+    if (line.headless())
+      return runHeadless(window, line.frames.value_or(1), line.screenshot, line.size);
+    if (line.size) window.resize(*line.size);
     window.show();
     window.startLiveUpdates();
     return QApplication::exec();

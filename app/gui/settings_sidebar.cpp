@@ -14,12 +14,11 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
-#include "backend_options_form.h"
 #include "ball_inspector.h"
 #include "fooball/presets.h"
 #include "log_slider.h"
 #include "number_format.h"
-#include "registry.h"
+#include "run_list_editor.h"
 
 namespace fooball::gui {
 
@@ -62,7 +61,8 @@ SettingsSidebar::SettingsSidebar(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(inspectorGroup_);
   layout->addWidget(createSceneGroup());
-  layout->addWidget(createBackendGroup());
+  runList_ = new RunListEditor;
+  layout->addWidget(runList_);
   layout->addWidget(createForcesGroup());
   layout->addWidget(createCollisionsGroup());
   layout->addWidget(createMouseGroup());
@@ -110,62 +110,6 @@ QGroupBox* SettingsSidebar::createSceneGroup() {
   buttons->addWidget(restart);
   buttons->addWidget(reset);
   layout->addLayout(buttons);
-  return group;
-}
-
-QGroupBox* SettingsSidebar::createBackendGroup() {
-  auto* group = new QGroupBox(tr("Physics backend"));
-  auto* layout = new QVBoxLayout(group);
-
-  backend_ = new QComboBox;
-  backend_->setObjectName(QStringLiteral("backendBox"));
-  compare_ = new QComboBox;
-  compare_->setObjectName(QStringLiteral("compareBox"));
-  compare_->addItem(tr("none"));
-  compare_->setItemData(0, tr("Single run"), Qt::ToolTipRole);
-  for (const BackendInfo& info : registeredBackends()) {
-    backend_->addItem(fromView(info.name));
-    backend_->setItemData(backend_->count() - 1, fromView(info.description), Qt::ToolTipRole);
-    compare_->addItem(fromView(info.name));
-    compare_->setItemData(compare_->count() - 1, fromView(info.description), Qt::ToolTipRole);
-  }
-  addLabelled(layout, tr("&Backend:"), backend_,
-              tr("The physics method; switching continues from the same positions and "
-                 "velocities"));
-  connect(backend_, &QComboBox::activated, this,
-          [this](int index) { emit backendChosen(backend_->itemText(index)); });
-
-  mainOptions_ = new BackendOptionsForm;
-  connect(mainOptions_, &BackendOptionsForm::optionChanged, this,
-          [this](const QString& name, double value) { emit backendOptionChanged(0, name, value); });
-  layout->addWidget(mainOptions_);
-
-  addLabelled(layout, tr("&Compare with:"), compare_,
-              tr("Runs the same scene on a second backend in lockstep; every edit and force "
-                 "applies to both. The same backend with other options compares settings."));
-  connect(compare_, &QComboBox::activated, this, [this](int index) {
-    emit compareChosen(index == 0 ? QString() : compare_->itemText(index));
-  });
-
-  compareOptionsTitle_ = new QLabel;
-  layout->addWidget(compareOptionsTitle_);
-  compareOptions_ = new BackendOptionsForm;
-  connect(compareOptions_, &BackendOptionsForm::optionChanged, this,
-          [this](const QString& name, double value) { emit backendOptionChanged(1, name, value); });
-  layout->addWidget(compareOptions_);
-
-  compareLayoutRow_ = new QWidget;
-  auto* layoutRow = new QHBoxLayout(compareLayoutRow_);
-  layoutRow->setContentsMargins(0, 0, 0, 0);
-  compareLayout_ = new QButtonGroup(this);
-  layoutRow->addWidget(
-      addRadio(compareLayout_, int(CompareLayout::Overlay), tr("Overlay"),
-               tr("One box: the compare run drawn as outlines over the main run")));
-  layoutRow->addWidget(addRadio(compareLayout_, int(CompareLayout::SideBySide), tr("Side by side"),
-                                tr("Two boxes, one per run")));
-  connect(compareLayout_, &QButtonGroup::idClicked, this,
-          [this](int id) { emit compareLayoutChosen(static_cast<CompareLayout>(id)); });
-  layout->addWidget(compareLayoutRow_);
   return group;
 }
 
@@ -313,10 +257,6 @@ QGroupBox* SettingsSidebar::createDrawingGroup() {
   return group;
 }
 
-BackendOptionsForm* SettingsSidebar::optionsForm(int runIndex) const {
-  return runIndex == 0 ? mainOptions_ : compareOptions_;
-}
-
 void SettingsSidebar::showSceneSource(const QString& presetName, const QString& sourceName) {
   const int index = presetName.isEmpty() ? -1 : preset_->findText(presetName);
   preset_->setPlaceholderText(sourceName);
@@ -353,16 +293,6 @@ void SettingsSidebar::showScope(Scope scope) {
   scope_->button(int(scope))->setChecked(true);
 }
 
-void SettingsSidebar::showBackends(const QString& main, const QString& compare) {
-  backend_->setCurrentIndex(backend_->findText(main));
-  compare_->setCurrentIndex(compare.isEmpty() ? 0 : compare_->findText(compare));
-  const bool comparing = !compare.isEmpty();
-  compareOptionsTitle_->setText(tr("Options of the compare run (%1):").arg(compare));
-  compareOptionsTitle_->setVisible(comparing);
-  compareOptions_->setVisible(comparing);
-  compareLayoutRow_->setVisible(comparing);
-}
-
 void SettingsSidebar::showAttractorCount(std::size_t count) {
   clearAttractors_->setText(tr("Clear attractors (%1)").arg(count));
   clearAttractors_->setEnabled(count > 0);
@@ -374,10 +304,6 @@ void SettingsSidebar::showDrawing(bool temperature, bool tethers, bool velocityV
   tethers_->setChecked(tethers);
   velocityVectors_->setChecked(velocityVectors);
   centreOfMass_->setChecked(centreOfMass);
-}
-
-void SettingsSidebar::showCompareLayout(CompareLayout layout) {
-  compareLayout_->button(int(layout))->setChecked(true);
 }
 
 void SettingsSidebar::showSelection(std::optional<std::size_t> index, const BallDef& ball) {

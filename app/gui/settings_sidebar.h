@@ -18,12 +18,12 @@ class QSpinBox;
 
 namespace fooball::gui {
 
-class BackendOptionsForm;
 class BallInspector;
 class LogSlider;
+class RunListEditor;
 
 /// Every setting of the sandbox, each live and showing its value and unit: the scene and its
-/// ball count, the backends (and compare mode), forces and time, collisions, the mouse tool,
+/// ball count, the runs (RunListEditor), forces and time, collisions, the mouse tool,
 /// drawing, and the inspector of the selected ball. It only reports what the user chose; the
 /// main window applies it and syncs the sidebar back with the show* slots.
 class SettingsSidebar : public QWidget {
@@ -35,15 +35,13 @@ class SettingsSidebar : public QWidget {
   /// Spinner limit: well past the 100,000 balls the renderer is built for.
   static constexpr int kMaxBallCount = 1'000'000;
 
-  BackendOptionsForm* optionsForm(int runIndex) const;
+  RunListEditor* runList() const { return runList_; }
   BallInspector* inspector() const { return inspector_; }
   LogSlider* gravitySlider() const { return gravity_; }
   LogSlider* airResistanceSlider() const { return airResistance_; }
   LogSlider* strengthSlider() const { return strength_; }
   LogSlider* timeScaleSlider() const { return timeScale_; }
   QSpinBox* ballCountBox() const { return ballCount_; }
-  QComboBox* backendBox() const { return backend_; }
-  QComboBox* compareBox() const { return compare_; }
 
  public slots:
   /// `presetName` empty: the scene came from a file called `sourceName`.
@@ -54,11 +52,8 @@ class SettingsSidebar : public QWidget {
   void showTimeScale(double timeScale);
   void showMouseMode(MouseMode mode);
   void showScope(Scope scope);
-  /// `compare` empty: compare mode is off.
-  void showBackends(const QString& main, const QString& compare);
   void showAttractorCount(std::size_t count);
   void showDrawing(bool temperature, bool tethers, bool velocityVectors, bool centreOfMass);
-  void showCompareLayout(CompareLayout layout);
   /// Shows the inspector for ball `index`, or hides it.
   void showSelection(std::optional<std::size_t> index, const BallDef& ball);
 
@@ -67,11 +62,6 @@ class SettingsSidebar : public QWidget {
   void ballCountChosen(int count);
   void restartRequested();
   void resetSceneRequested();
-
-  void backendChosen(const QString& name);
-  /// Empty: compare mode off.
-  void compareChosen(const QString& name);
-  void backendOptionChanged(int runIndex, const QString& name, double value);
 
   void gravityChosen(double magnitude);          ///< m/s², pointing the way gravity points now
   void airResistanceChosen(double coefficient);  ///< 1/s
@@ -89,11 +79,9 @@ class SettingsSidebar : public QWidget {
   void tethersToggled(bool on);
   void velocityVectorsToggled(bool on);
   void centreOfMassToggled(bool on);
-  void compareLayoutChosen(CompareLayout layout);
 
  private:
   QGroupBox* createSceneGroup();
-  QGroupBox* createBackendGroup();
   QGroupBox* createForcesGroup();
   QGroupBox* createCollisionsGroup();
   QGroupBox* createMouseGroup();
@@ -101,13 +89,7 @@ class SettingsSidebar : public QWidget {
 
   QComboBox* preset_;
   QSpinBox* ballCount_;
-  QComboBox* backend_;
-  QComboBox* compare_;
-  BackendOptionsForm* mainOptions_;
-  BackendOptionsForm* compareOptions_;
-  QLabel* compareOptionsTitle_;
-  QButtonGroup* compareLayout_;
-  QWidget* compareLayoutRow_;
+  RunListEditor* runList_;
   LogSlider* gravity_;
   LogSlider* airResistance_;
   LogSlider* strength_;

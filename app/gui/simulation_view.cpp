@@ -53,6 +53,12 @@ QColor toolColour(MouseMode mode) {
   return Qt::white;
 }
 
+/// Side by side: the tiles' columns and rows.
+struct TileGrid {
+  int columns = 1;
+  int rows = 1;
+};
+
 void drawPill(QPainter& painter, const QRectF& rect) {
   painter.setPen(QPen(QColor(255, 255, 255, 40), 1.0));
   painter.setBrush(QColor(12, 13, 18, 205));
@@ -97,27 +103,68 @@ void SimulationView::setCompareLayout(CompareLayout layout) {
   update();
 }
 
-std::vector<SimulationView::Panel> SimulationView::panels() const {
-  const Box& box = runs_.run(RunController::kMainRun).box();
-  if (runs_.comparing() && compareLayout_ == CompareLayout::SideBySide) {
-    const int half = width() / 2;
-    return {{RunController::kMainRun, false,
-             ViewTransform(box, QRect(0, 0, half, height()), kBoxMargin)},
-            {RunController::kCompareRun, false,
-             ViewTransform(box, QRect(half, 0, width() - half, height()), kBoxMargin)}};
+TileGrid tileGrid(int tiles, QSize area, const Box& box) {
+  // The grid whose tiles show the box largest, each keeping the box's aspect ratio. On a tie
+  // (a 16:9 box in a 16:9 view fits 1×2 and 2×1 alike) the squarer grid wins: 2 runs 1×2,
+  // 3–4 runs 2×2, 5–6 runs 2×3.
+  TileGrid best;
+  double bestScale = -1.0;
+  const int preferred = static_cast<int>(std::ceil(std::sqrt(double(tiles))));
+  for (int offset = 0; offset < tiles; ++offset) {
+    for (const int columns : {preferred + offset, preferred - offset}) {
+      if (columns < 1 || columns > tiles) continue;
+      const int rows = (tiles + columns - 1) / columns;
+      const double scale = std::min((area.width() / double(columns) - 2 * kBoxMargin) / box.width,
+                                    (area.height() / double(rows) - 2 * kBoxMargin) / box.height);
+      if (scale > bestScale * (1.0 + 1e-9)) {
+        bestScale = scale;
+        best = {columns, rows};
+      }
+    }
   }
-  return {{RunController::kMainRun, runs_.comparing(), ViewTransform(box, rect(), kBoxMargin)}};
+  return best;
+}
+
+std::vector<SimulationView::Panel> SimulationView::panels() const {
+  const Box& box = runs_.run(0).box();
+  const int runs = runs_.runCount();
+  if (runs == 1 || compareLayout_ == CompareLayout::Overlay) {
+    return {{0, runs > 1, ViewTransform(box, rect(), kBoxMargin)}};
+  }
+  const TileGrid grid = tileGrid(runs, size(), box);
+  std::vector<Panel> tiles;
+  for (int index = 0; index < runs; ++index) {
+    const int column = index % grid.columns;
+    const int row = index / grid.columns;
+    const int left = width() * column / grid.columns;
+    const int top = height() * row / grid.rows;
+    const QRect cell(left, top, width() * (column + 1) / grid.columns - left,
+                     height() * (row + 1) / grid.rows - top);
+    tiles.push_back({index, false, ViewTransform(box, cell, kBoxMargin)});
+  }
+  return tiles;
 }
 
 const SimulationView::Panel* SimulationView::panelAt(QPointF position,
                                                      const std::vector<Panel>& panels) const {
-  if (panels.size() == 2 && position.x() >= width() / 2) return &panels[1];
-  return &panels[0];
+  // The tile whose box is nearest: in the gutters between boxes the tool still has a box.
+  const auto distance = [&](const Panel& panel) {
+    const QRectF box = panel.transform.boxRect();
+    const double dx = std::max({box.left() - position.x(), 0.0, position.x() - box.right()});
+    const double dy = std::max({box.top() - position.y(), 0.0, position.y() - box.bottom()});
+    return dx * dx + dy * dy;
+  };
+  return &*std::min_element(panels.begin(), panels.end(), [&](const Panel& a, const Panel& b) {
+    return distance(a) < distance(b);
+  });
 }
 
 ViewTransform SimulationView::transformForRun(int runIndex) const {
   const auto all = panels();
-  return all.size() == 2 ? all[static_cast<std::size_t>(runIndex)].transform : all[0].transform;
+  for (const Panel& panel : all) {
+    if (panel.runIndex == runIndex) return panel.transform;
+  }
+  return all.front().transform;  // overlay: every run in the one box
 }
 
 Vec2 SimulationView::toMetres(QPointF position) const {
@@ -144,7 +191,7 @@ std::optional<std::size_t> SimulationView::ballAt(QPointF position) const {
 }
 
 double SimulationView::temperatureTopSpeed() {
-  const auto velocities = runs_.run(RunController::kMainRun).velocities();
+  const auto velocities = runs_.run(0).velocities();
   double sumSquares = 0.0;
   for (const Vec2 v : velocities)
     sumSquares += lengthSquared(v);
@@ -187,6 +234,7 @@ void SimulationView::paintBalls(QPainter& painter, const Panel& panel, std::size
   const QRect boxRect = panel.transform.boxRect();
   const QSize imageSize(static_cast<int>(std::ceil(boxRect.width() * pixelRatio)),
                         static_cast<int>(std::ceil(boxRect.height() * pixelRatio)));
+  if (ballImages_.size() <= panelIndex) ballImages_.resize(panelIndex + 1);
   QImage& image = ballImages_[panelIndex];
   if (image.size() != imageSize) image = QImage(imageSize, QImage::Format_ARGB32_Premultiplied);
   image.setDevicePixelRatio(1.0);
@@ -201,16 +249,16 @@ void SimulationView::paintBalls(QPainter& painter, const Panel& panel, std::size
   const auto positions = run.positions();
   const auto velocities = run.velocities();
   const auto radii = run.radii();
-  const auto colours = runs_.colours();
+  const auto colours = runs_.group().colours();
   const std::size_t count = std::min(positions.size(), colours.size());
   for (std::size_t i = 0; i < count; ++i) {
     const QRgb colour =
         temperature_ ? palette_.colourAt(length(velocities[i]) / topSpeed_) : QRgb(colours[i]);
     rasterizer_.fillDisc(toImage(positions[i]), radii[i] * scale, colour);
   }
-  if (panel.overlay) {
-    const Simulation& other = runs_.run(RunController::kCompareRun);
-    const QRgb outline = ChartPanel::runColour(RunController::kCompareRun).rgb();
+  for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex) {
+    const Simulation& other = runs_.run(runIndex);
+    const QRgb outline = ChartPanel::runColour(runIndex).rgb();
     const auto otherPositions = other.positions();
     const auto otherRadii = other.radii();
     for (std::size_t i = 0; i < otherPositions.size(); ++i) {
@@ -261,7 +309,7 @@ void SimulationView::paintTethers(QPainter& painter, const Panel& panel, const S
   const Interactions& tools = run.interactions;
   const ViewTransform& t = panel.transform;
   const auto positions = run.positions();
-  const auto colours = runs_.colours();
+  const auto colours = runs_.group().colours();
   const bool fewBalls = positions.size() <= kColouredTetherLimit;
   const auto tetherAll = [&](QPointF from, QColor uniform) {
     if (fewBalls && positions.size() <= colours.size()) {
@@ -341,12 +389,12 @@ void SimulationView::paintCentreOfMass(QPainter& painter, const Panel& panel) co
     painter.drawLine(at - QPointF(0, 12), at + QPointF(0, 12));
   };
   mark(runs_.run(panel.runIndex), Qt::white);
-  if (panel.overlay)
-    mark(runs_.run(RunController::kCompareRun), ChartPanel::runColour(RunController::kCompareRun));
+  for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex)
+    mark(runs_.run(runIndex), ChartPanel::runColour(runIndex));
 }
 
 void SimulationView::paintSelection(QPainter& painter, const Panel& panel) const {
-  const auto selected = runs_.selected();
+  const auto selected = runs_.group().selected();
   if (!selected) return;
   const auto ring = [&](const Simulation& run, QColor colour) {
     if (*selected >= run.ballCount()) return;
@@ -362,8 +410,8 @@ void SimulationView::paintSelection(QPainter& painter, const Panel& panel) const
                      QStringLiteral("#%1").arg(*selected));
   };
   ring(runs_.run(panel.runIndex), Qt::white);
-  if (panel.overlay)
-    ring(runs_.run(RunController::kCompareRun), ChartPanel::runColour(RunController::kCompareRun));
+  for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex)
+    ring(runs_.run(runIndex), ChartPanel::runColour(runIndex));
 }
 
 void SimulationView::paintRunLabels(QPainter& painter, const Panel& panel) const {
@@ -375,12 +423,11 @@ void SimulationView::paintRunLabels(QPainter& painter, const Panel& panel) const
   };
   std::vector<Entry> entries;
   if (panel.overlay) {
-    entries.push_back(
-        {RunController::kMainRun, tr("%1 — filled").arg(runs_.backendName(0)), false});
-    entries.push_back(
-        {RunController::kCompareRun, tr("%1 — outlines").arg(runs_.backendName(1)), true});
+    entries.push_back({0, tr("%1 — filled").arg(runs_.label(0)), false});
+    for (int runIndex = 1; runIndex < runs_.runCount(); ++runIndex)
+      entries.push_back({runIndex, tr("%1 — outlines").arg(runs_.label(runIndex)), true});
   } else {
-    entries.push_back({panel.runIndex, runs_.backendName(panel.runIndex), false});
+    entries.push_back({panel.runIndex, runs_.label(panel.runIndex), false});
   }
   const QFontMetrics metrics(font());
   int textWidth = 0;

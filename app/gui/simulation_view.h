@@ -3,7 +3,6 @@
 #include <QImage>
 #include <QLineF>
 #include <QWidget>
-#include <array>
 #include <optional>
 #include <vector>
 
@@ -20,10 +19,10 @@ namespace fooball::gui {
 
 class RunController;
 
-/// How compare mode shows its two runs.
+/// How compare mode shows its runs.
 enum class CompareLayout {
-  Overlay,     ///< one box: the main run filled, the compare run as outlines on top
-  SideBySide,  ///< two boxes, each run filled in its own
+  Overlay,     ///< one box: run 0 filled, every other run as outlines in its colour on top
+  SideBySide,  ///< a grid of labelled boxes (2 runs 1×2, 3–4 runs 2×2, …), each run filled
 };
 
 /// The black box of balls, painted from the runs' current state, and the mouse tools on it.
@@ -75,7 +74,7 @@ class SimulationView : public QWidget {
  private:
   struct Panel {
     int runIndex;  ///< the run drawn filled
-    bool overlay;  ///< the compare run is drawn as outlines on top
+    bool overlay;  ///< the other runs are drawn as outlines on top
     ViewTransform transform;
   };
   std::vector<Panel> panels() const;
@@ -104,7 +103,7 @@ class SimulationView : public QWidget {
 
   TemperaturePalette palette_;
   double topSpeed_ = 0.0;  ///< m/s at the hot end of the temperature scale, smoothed over frames
-  std::array<QImage, 2> ballImages_;
+  std::vector<QImage> ballImages_;  ///< one per panel
   DiscRasterizer rasterizer_;
   std::vector<QLineF> lines_;  ///< reused for tethers and vectors
 };

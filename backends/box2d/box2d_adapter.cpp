@@ -29,26 +29,19 @@ void Box2dAdapter::load(const Scene& scene) {
   // there is nothing to clear after every Box2D step.
   world_->SetAutoClearForces(false);
   world_->SetContactListener(&contacts_);
-  name_ = scene.name;
   box_ = scene.box;
   worldSettings_ = scene.world;
   walls_.sync(*world_, box_, worldSettings_.walls);
 
   balls_.clear();
-  radii_.clear();
   masses_.clear();
-  colors_.clear();
   balls_.reserve(scene.balls.size());
-  radii_.reserve(scene.balls.size());
   masses_.reserve(scene.balls.size());
-  colors_.reserve(scene.balls.size());
   totalMass_ = 0.0;
   for (const BallDef& ball : scene.balls) {
     balls_.push_back(
         createBallBody(*world_, ball, worldSettings_.ballCollisions, settings_.bullets));
-    radii_.push_back(ball.radius);
     masses_.push_back(ball.mass);
-    colors_.push_back(ball.color);
     totalMass_ += ball.mass;
   }
 
@@ -60,20 +53,6 @@ void Box2dAdapter::load(const Scene& scene) {
   substepsRaised_ = 0;
   box2dSteps_ = 0;
   ballsPutBack_ = 0;
-}
-
-Scene Box2dAdapter::save() const {
-  Scene scene;
-  scene.name = name_;
-  scene.box = box_;
-  scene.world = worldSettings_;
-  scene.balls.reserve(balls_.size());
-  for (std::size_t i = 0; i < balls_.size(); ++i) {
-    scene.balls.push_back({fromBox2d(balls_[i]->GetPosition()),
-                           fromBox2d(balls_[i]->GetLinearVelocity()), radii_[i], masses_[i],
-                           colors_[i]});
-  }
-  return scene;
 }
 
 void Box2dAdapter::setWorld(const WorldSettings& world) {
@@ -95,9 +74,7 @@ void Box2dAdapter::setBall(std::size_t index, const BallDef& ball) {
   body.SetTransform(toBox2d(ball.position), 0.0f);
   body.SetLinearVelocity(toBox2d(ball.velocity));
   setBallShape(body, ball.radius, ball.mass);
-  radii_[index] = ball.radius;
   masses_[index] = ball.mass;
-  colors_[index] = ball.color;
   totalMass_ = 0.0;
   for (const double mass : masses_)
     totalMass_ += mass;

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <string>
 #include <vector>
 
 #include "box2d_options.h"
@@ -20,8 +19,8 @@ namespace fooball::box2d_detail {
 /// The Backend on Box2D 2.4.1: balls are dynamic circles, walls static thick boxes, everything
 /// perfectly elastic and frictionless (elastic_fixture.h). Box2D's state is float, so positions
 /// and velocities are rounded to float on the way in and widened on the way out; the scene's
-/// radii, masses and colours are kept beside it in double, so save() gives back what was
-/// loaded. Box2D's traps are handled where they bite: restitution threshold and friction in
+/// masses are kept beside it in double (Box2D's float density·πr² differs by ~1e-7). Box2D's
+/// traps are handled where they bite: restitution threshold and friction in
 /// elastic_fixture.h, rotation and sleeping in ball_bodies.h, the translation cap in
 /// translation_cap.h, damping in linear_damping.h, the polygon skin in wall_bodies.cpp.
 class Box2dAdapter final : public Backend {
@@ -29,7 +28,6 @@ class Box2dAdapter final : public Backend {
   Box2dAdapter();
 
   void load(const Scene& scene) override;
-  Scene save() const override;
   void setWorld(const WorldSettings& world) override;
   void step(double dt, std::span<const Vec2> forces) override;
   void setBall(std::size_t index, const BallDef& ball) override;
@@ -54,12 +52,9 @@ class Box2dAdapter final : public Backend {
   std::unique_ptr<b2World> world_;
   WallBodies walls_;
   std::vector<b2Body*> balls_;  ///< scene order (Box2D's own body list is in reverse order)
-  std::vector<double> radii_;   ///< m
   std::vector<double> masses_;  ///< kg, the scene's (Box2D's float mass differs by ~1e-7)
-  std::vector<std::uint32_t> colors_;
-  double totalMass_ = 0.0;  ///< kg
+  double totalMass_ = 0.0;      ///< kg
 
-  std::string name_;
   Box box_;
   WorldSettings worldSettings_;
 

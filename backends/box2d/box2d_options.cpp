@@ -6,9 +6,9 @@ std::vector<OptionSpec> box2dOptionSpecs() {
   const Box2dSettings defaults;
   return {
       {"substeps", "Box2D steps per simulation step (each of dt/substeps seconds)",
-       static_cast<double>(defaults.substeps), 1.0, 1000.0, true},
+       static_cast<double>(defaults.substeps), 1.0, 1000.0, true, OptionRole::Substeps},
       {"velocity_iterations", "Box2D velocity (impulse) iterations per Box2D step",
-       static_cast<double>(defaults.velocityIterations), 1.0, 100.0, true},
+       static_cast<double>(defaults.velocityIterations), 1.0, 100.0, true, OptionRole::Iterations},
       {"position_iterations", "Box2D position-correction iterations per Box2D step (0: none)",
        static_cast<double>(defaults.positionIterations), 0.0, 100.0, true},
       {"bullets", "continuous collision between balls too (0/1; walls always have it)",

@@ -1,40 +1,24 @@
 #include "elastic/elastic_backend.h"
 
-#include "ball_colors.h"
 #include "elastic_world.h"
 
 namespace fooball {
 
 namespace {
 
-/// The seed's method done right (see ElasticWorld), behind the Backend interface: scene order,
-/// colours and options.
+/// The seed's method done right (see ElasticWorld), behind the Backend interface: scene order and
+/// options.
 class ElasticBackend final : public Backend {
  public:
   ElasticBackend()
       : Backend({{"substeps", "solver substeps per step (more: less overlap, less tunnelling)", 4,
-                  1, 1000, true},
+                  1, 1000, true, OptionRole::Substeps},
                  {"threads", "worker threads per step (results are identical for any count)", 1, 1,
-                  64, true}}) {
+                  64, true, OptionRole::Threads}}) {
     optionsChanged();
   }
 
-  void load(const Scene& scene) override {
-    name_ = scene.name;
-    colors_.assign(scene.balls);
-    world_.load(scene.balls, scene.box, scene.world);
-  }
-
-  Scene save() const override {
-    const elastic::Balls& balls = world_.balls();
-    Scene scene{name_, world_.box(), world_.world(), std::vector<BallDef>(balls.size())};
-    for (std::size_t slot = 0; slot < balls.size(); ++slot) {
-      const std::uint32_t id = balls.id[slot];
-      const elastic::Ball& ball = balls.ball[slot];
-      scene.balls[id] = {{ball.x, ball.y}, {ball.vx, ball.vy}, ball.radius, ball.mass, colors_[id]};
-    }
-    return scene;
-  }
+  void load(const Scene& scene) override { world_.load(scene.balls, scene.box, scene.world); }
 
   void setWorld(const WorldSettings& world) override { world_.setWorld(world); }
 
@@ -42,7 +26,6 @@ class ElasticBackend final : public Backend {
 
   void setBall(std::size_t index, const BallDef& ball) override {
     world_.setBall(world_.balls().slotOf(index), ball);
-    colors_.set(index, ball.color);
   }
 
   std::size_t ballCount() const override { return world_.balls().size(); }
@@ -61,7 +44,7 @@ class ElasticBackend final : public Backend {
 
   /// "memory_bytes": every buffer the backend holds, for the benchmarks' bytes per ball.
   std::vector<Diagnostic> diagnostics() const override {
-    return {{"memory_bytes", static_cast<double>(world_.memoryBytes() + colors_.memoryBytes())}};
+    return {{"memory_bytes", static_cast<double>(world_.memoryBytes())}};
   }
 
  protected:
@@ -71,8 +54,6 @@ class ElasticBackend final : public Backend {
   }
 
  private:
-  std::string name_;
-  elastic::BallColors colors_;
   elastic::ElasticWorld world_;
 };
 

@@ -25,41 +25,18 @@ std::vector<OptionSpec> exactOptionSpecs() {
   };
 }
 
-/// The `exact` backend: the event-driven solver behind the Backend interface, plus what the
-/// solver does not need (scene name, colours).
+/// The `exact` backend: the event-driven solver behind the Backend interface.
 class ExactBackend final : public Backend {
  public:
   ExactBackend() : Backend(exactOptionSpecs()) { ExactBackend::optionsChanged(); }
 
-  void load(const Scene& scene) override {
-    name_ = scene.name;
-    colors_.clear();
-    for (const BallDef& ball : scene.balls)
-      colors_.push_back(ball.color);
-    world_.load(scene);
-  }
-
-  Scene save() const override {
-    Scene scene;
-    scene.name = name_;
-    scene.box = world_.box();
-    scene.world = world_.world();
-    scene.balls.resize(world_.ballCount());
-    for (std::size_t ball = 0; ball < scene.balls.size(); ++ball) {
-      scene.balls[ball] = {world_.position(ball), world_.velocity(ball), world_.radius(ball),
-                           world_.mass(ball), colors_[ball]};
-    }
-    return scene;
-  }
+  void load(const Scene& scene) override { world_.load(scene); }
 
   void setWorld(const WorldSettings& world) override { world_.setWorld(world); }
 
   void step(double dt, std::span<const Vec2> forces) override { world_.step(dt, forces); }
 
-  void setBall(std::size_t index, const BallDef& ball) override {
-    colors_[index] = ball.color;
-    world_.setBall(index, ball);
-  }
+  void setBall(std::size_t index, const BallDef& ball) override { world_.setBall(index, ball); }
 
   std::size_t ballCount() const override { return world_.ballCount(); }
 
@@ -90,8 +67,6 @@ class ExactBackend final : public Backend {
   }
 
  private:
-  std::string name_;
-  std::vector<std::uint32_t> colors_;
   exact::EventDrivenWorld world_;
 };
 

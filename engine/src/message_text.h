@@ -4,11 +4,9 @@
 #include <string>
 #include <string_view>
 
-namespace fooball {
+#include "fooball/number_text.h"
 
-/// `value` as the shortest text that reads back to the same double ("-1", "0.1", "1e+300",
-/// "inf", "nan"): error messages quote the user's numbers exactly.
-std::string exactNumberText(double value);
+namespace fooball {
 
 /// `value` to three significant digits, for quantities the program derived ("0.0312", "12.5").
 std::string roundedNumberText(double value);

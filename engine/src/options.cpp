@@ -1,21 +1,14 @@
 #include "fooball/options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "fooball/number_text.h"
+
 namespace fooball {
-
-namespace {
-
-std::string formatNumber(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-}  // namespace
 
 OptionSet::OptionSet(std::vector<OptionSpec> specs) : specs_(std::move(specs)) {
   values_.reserve(specs_.size());
@@ -34,6 +27,17 @@ std::size_t OptionSet::indexOf(std::string_view name) const {
                               "' (options: " + (known.empty() ? "none" : known) + ")");
 }
 
+bool OptionSet::has(std::string_view name) const {
+  return std::any_of(specs_.begin(), specs_.end(),
+                     [&](const OptionSpec& spec) { return spec.name == name; });
+}
+
+const OptionSpec* OptionSet::withRole(OptionRole role) const {
+  const auto found = std::find_if(specs_.begin(), specs_.end(),
+                                  [&](const OptionSpec& spec) { return spec.role == role; });
+  return found == specs_.end() ? nullptr : &*found;
+}
+
 double OptionSet::value(std::string_view name) const {
   return values_[indexOf(name)];
 }
@@ -44,11 +48,13 @@ void OptionSet::set(std::string_view name, double value) {
   const std::string where = "option '" + spec.name + "': ";
   if (!std::isfinite(value)) throw std::invalid_argument(where + "must be a finite number");
   if (spec.integer && value != std::floor(value)) {
-    throw std::invalid_argument(where + "must be a whole number (got " + formatNumber(value) + ")");
+    throw std::invalid_argument(where + "must be a whole number (got " + exactNumberText(value) +
+                                ")");
   }
   if (value < spec.min || value > spec.max) {
-    throw std::invalid_argument(where + "must be in [" + formatNumber(spec.min) + ", " +
-                                formatNumber(spec.max) + "] (got " + formatNumber(value) + ")");
+    throw std::invalid_argument(where + "must be in [" + exactNumberText(spec.min) + ", " +
+                                exactNumberText(spec.max) + "] (got " + exactNumberText(value) +
+                                ")");
   }
   values_[index] = value;
 }

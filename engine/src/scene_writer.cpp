@@ -24,11 +24,9 @@ void appendNumber(std::string& out, double value, const Place& place) {
   if (!std::isfinite(value)) {
     failAt(place, "cannot be written: JSON has no " + exactNumberText(value));
   }
-  std::array<char, 32> buffer{};
-  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
-  const std::string_view text(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+  const std::string text = exactNumberText(value);
   out += text;
-  if (text.find_first_of(".e") == std::string_view::npos) out += ".0";
+  if (text.find_first_of(".e") == std::string::npos) out += ".0";
 }
 
 void appendVec2(std::string& out, Vec2 value, const Place& place) {

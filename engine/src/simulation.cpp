@@ -23,12 +23,11 @@ Simulation::Simulation(const Scene& scene, std::unique_ptr<Backend> backend)
   load(scene);
 }
 
-void Simulation::load(const Scene& scene) {
+void Simulation::load(const Scene& scene, double startTime) {
   backend_->load(scene);
   adoptScene(scene);
-  timeBase_ = 0.0;
+  timeBase_ = startTime;
   stepsSinceDtChange_ = 0;
-  accumulator_ = 0.0;
   steps_ = 0;
   earlierBackends_ = {};
   externalWork_ = 0.0;
@@ -65,7 +64,7 @@ double Simulation::totalEnergy() const {
 }
 
 void Simulation::setBackend(std::unique_ptr<Backend> next) {
-  next->load(backend_->save());
+  next->load(scene());
   earlierBackends_ = earlierBackends_ + backendCounters_;
   backend_ = std::move(next);
   refreshState();
@@ -183,23 +182,6 @@ void Simulation::run(double seconds) {
   const auto count = static_cast<std::uint64_t>(std::llround(seconds / dt_));
   for (std::uint64_t i = 0; i < count; ++i)
     step();
-}
-
-int Simulation::advance(double elapsedSeconds, double timeScale, int maxSteps) {
-  if (paused) return 0;
-  const double simulatedSeconds = elapsedSeconds * timeScale;
-  if (simulatedSeconds > 0.0 && std::isfinite(simulatedSeconds)) accumulator_ += simulatedSeconds;
-  const double due = std::floor(accumulator_ / dt_);
-  int count = maxSteps;
-  if (due > maxSteps) {
-    accumulator_ = 0.0;  // the machine cannot keep up: drop the backlog rather than spiral
-  } else {
-    count = static_cast<int>(due);
-    accumulator_ -= count * dt_;
-  }
-  for (int i = 0; i < count; ++i)
-    step();
-  return count;
 }
 
 BackendCounters Simulation::counters() const {

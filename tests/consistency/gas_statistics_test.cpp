@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "backend_pairs.h"
+#include "backend_profiles.h"
 #include "backend_state.h"
 #include "fooball/random_balls.h"
 #include "kolmogorov_smirnov.h"
@@ -119,17 +120,10 @@ double collisionRateEnskog(const Scene& scene, double kT) {
   return density * 2.0 * diameter * std::sqrt(std::numbers::pi * kT / mass) * contact;
 }
 
-/// Relative kinetic-energy drift a backend may show over the run. elastic and exact conserve
-/// it per collision to double rounding (~1e-16 relative each, ~2.5e4 collisions here: 1e-9 is
-/// far above that). Box2D stores float velocities (ε = 1.2e-7 per component per collision: a
-/// random walk of ~1e-7 over the run), but its drift comes in rare jumps: sequential impulses
-/// with restitution 1 resolve contacts found late, and several at once, one after another,
-/// which does not keep the energy of a touching group. No closed form bounds those, so the
-/// bound is measured: over seeds 7–10 of this scene, and the wall variants the Box2D adapter
-/// went through while this test was written, the drift ran from −7e-5 to +4.5e-3; 1e-2 is
-/// twice the worst.
+/// Relative kinetic-energy drift a backend may show over the run: its row in
+/// tests/backend_profiles.cpp, with the reason.
 double energyTolerance(std::string_view backend) {
-  return backend == "box2d" ? 1e-2 : 1e-9;
+  return testing::profileFor(backend).gasEnergyDrift;
 }
 
 class GasStatistics : public ::testing::TestWithParam<BackendPair> {};

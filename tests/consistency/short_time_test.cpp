@@ -1,6 +1,7 @@
 // Short runs of simple scenes, before chaos sets in, on every pair of backends: each backend
 // against the closed form, and the two against each other, within bounds derived from each
-// method's known errors (method_errors.h). Two backends may differ by the sum of their bounds.
+// method's known errors (method_errors.h; each backend's model is its row in
+// tests/backend_profiles.cpp). Two backends may differ by the sum of their bounds.
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "backend_pairs.h"
+#include "backend_profiles.h"
 #include "backend_state.h"
 #include "closed_forms.h"
 #include "method_errors.h"
@@ -57,7 +59,8 @@ struct BackendRun {
 
 BackendRun runScene(const BackendInfo& info, const Scene& scene, double seconds) {
   auto backend = info.create();
-  const MethodError error = testing::methodError(info.name, *backend, kDt);
+  const MethodError error =
+      testing::methodError(testing::profileFor(info.name).methodError, *backend, kDt);
   backend->load(scene);
   const long steps = std::lround(seconds / kDt);
   for (long i = 0; i < steps; ++i)

@@ -4,7 +4,9 @@
 #include "fooball/backend.h"
 #include "gui_fixture.h"
 #include "registry.h"
+#include "run_list_editor.h"
 #include "settings_sidebar.h"
+#include "window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -27,8 +29,8 @@ TEST_F(BackendSwitch, KeepsBallCountPositionsAndVelocities) {
     const std::vector<Vec2> velocities(mainRun().velocities().begin(),
                                        mainRun().velocities().end());
     const double time = mainRun().time();
-    choose(window->sidebar()->backendBox(), name);
-    EXPECT_EQ(runs().backendName(0), name);
+    choose(window->sidebar()->runList()->backendBox(0), name);
+    EXPECT_EQ(runs().label(0), name);
     ASSERT_EQ(mainRun().ballCount(), positions.size());
     EXPECT_EQ(mainRun().time(), time) << "switching resets nothing";
     for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -45,7 +47,7 @@ TEST_F(BackendSwitch, KeepsBallCountPositionsAndVelocities) {
 TEST_F(BackendSwitch, OptionsFormListsTheChosenBackendsOptions) {
   open(stillBalls());
   for (const BackendInfo& info : registeredBackends()) {
-    choose(window->sidebar()->backendBox(),
+    choose(window->sidebar()->runList()->backendBox(0),
            QString::fromUtf8(info.name.data(), qsizetype(info.name.size())));
     for (const OptionSpec& spec : mainRun().backend().options().specs()) {
       EXPECT_NE(window->sidebar()->findChild<QWidget*>(QStringLiteral("option_") +

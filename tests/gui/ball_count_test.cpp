@@ -39,7 +39,7 @@ TEST_F(BallCount, MoreThanFitAtTheirSizeAreAddedSmaller) {
   open(fooball::testing::gas(30));
   spin(20000);
   ASSERT_EQ(mainRun().ballCount(), 20000u);
-  EXPECT_LT(runs().newBallScale(), 1.0);
+  EXPECT_LT(group().newBallScale(), 1.0);
   EXPECT_LT(mainRun().radii()[19999], 0.1);
   EXPECT_EQ(mainRun().metrics().maxOverlap, 0.0);
   EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("size")));
@@ -56,7 +56,7 @@ TEST_F(BallCount, TooManyToFitShowsAnErrorAndKeepsTheBalls) {
 }
 
 TEST_F(BallCount, ChangesApplyToBothRunsInCompareMode) {
-  open(fooball::testing::gas(20), QStringLiteral("elastic"), QStringLiteral("box2d"));
+  open(fooball::testing::gas(20), "elastic", {"box2d"});
   frames(20);
   spin(60);
   EXPECT_EQ(runs().run(0).ballCount(), 60u);

@@ -15,6 +15,8 @@
 #include <functional>
 
 #include "gui_fixture.h"
+#include "run_list_editor.h"
+#include "window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -38,8 +40,8 @@ bool waitUntil(const std::function<bool()>& done, double seconds) {
 class Benchmark : public GuiTest {
  protected:
   BenchmarkDialog* openDialog() {
-    window->benchmarkAction()->trigger();
-    return window->benchmarkDialog();
+    window->actions().benchmark()->trigger();
+    return window->actions().benchmarkDialog();
   }
 
   /// Only `backend` checked, the budget `budgetMs`.
@@ -59,10 +61,10 @@ TEST_F(Benchmark, ToolsMenuOpensTheDialog) {
   bool inToolsMenu = false;
   for (QAction* menu : window->menuBar()->actions()) {
     if (menu->text() == QStringLiteral("&Tools") && menu->menu())
-      inToolsMenu = menu->menu()->actions().contains(window->benchmarkAction());
+      inToolsMenu = menu->menu()->actions().contains(window->actions().benchmark());
   }
   EXPECT_TRUE(inToolsMenu);
-  EXPECT_EQ(window->benchmarkDialog(), nullptr);
+  EXPECT_EQ(window->actions().benchmarkDialog(), nullptr);
   BenchmarkDialog* dialog = openDialog();
   ASSERT_NE(dialog, nullptr);
   EXPECT_TRUE(dialog->isVisible());

@@ -7,9 +7,12 @@
 #include <QColor>
 #include <QFile>
 #include <QImage>
+#include <QLogValueAxis>
 #include <QTemporaryDir>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 
 #include "axis_scale.h"
 #include "chart_csv.h"
@@ -22,7 +25,7 @@ namespace {
 constexpr int kMaxPoints = TimeChart::kMaxPointsPerCurve;
 
 /// A plausible state at `time` (s): energy sloshing between kinetic and potential, momentum
-/// turning, a residual that grows; `runIndex` shifts the numbers so two runs differ.
+/// turning, a residual that grows; `runIndex` shifts the numbers so runs differ.
 Metrics metricsAt(double time, int runIndex = 0) {
   Metrics metrics;
   metrics.time = time;
@@ -34,10 +37,61 @@ Metrics metricsAt(double time, int runIndex = 0) {
   return metrics;
 }
 
-void addRun(ChartPanel& panel, int runIndex, int count, double dt) {
-  for (int i = 0; i < count; ++i)
-    panel.addSample(runIndex, metricsAt(i * dt, runIndex));
+/// Run `runIndex`'s divergence from run 0 at `time` (s): none for run 0; for the others it grows
+/// a decade every 2/3 s from k/3 · 1e-12 m, up to k/3 · 1e3 m at 10 s, and stays there.
+Divergence divergenceAt(double time, int runIndex) {
+  Divergence divergence;
+  if (runIndex == 0) return divergence;
+  const double scale = runIndex / 3.0;
+  divergence.rmsPositionDifference = scale * 1e-12 * std::pow(10.0, 1.5 * std::min(time, 10.0));
+  divergence.maxPositionDifference = 2.5 * divergence.rmsPositionDifference;
+  divergence.energyDifference = 1e-3 * runIndex;
+  divergence.momentumDifference = 1e-4 * runIndex;
+  return divergence;
 }
+
+/// The chaos baseline: run 0's method, its own numbers (run "10"), a divergence from 1e-9 m.
+Metrics baselineMetricsAt(double time) {
+  return metricsAt(time, 10);
+}
+Divergence baselineDivergenceAt(double time) {
+  Divergence divergence;
+  divergence.rmsPositionDifference = 1e-9 * std::pow(10.0, 0.5 * time);
+  divergence.maxPositionDifference = 3.0 * divergence.rmsPositionDifference;
+  return divergence;
+}
+
+void addRun(ChartPanel& panel, int runIndex, int count, double dt, double start = 0.0) {
+  for (int i = 0; i < count; ++i) {
+    const double time = start + i * dt;
+    panel.addSample(runIndex, metricsAt(time, runIndex), divergenceAt(time, runIndex));
+  }
+}
+
+void addBaseline(ChartPanel& panel, int count, double dt) {
+  for (int i = 0; i < count; ++i)
+    panel.addBaselineSample(baselineMetricsAt(i * dt), baselineDivergenceAt(i * dt));
+}
+
+QAction* toggleNamed(ChartPanel& panel, const char* name) {
+  auto* toggle = panel.findChild<QAction*>(name);
+  EXPECT_NE(toggle, nullptr) << name;
+  return toggle;
+}
+
+/// The lines of `path`, which must end with a line break.
+QList<QByteArray> csvLines(const QString& path) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) return {};
+  QList<QByteArray> lines = file.readAll().split('\n');
+  EXPECT_TRUE(lines.back().isEmpty());  // the last row ends its line too
+  lines.removeLast();
+  return lines;
+}
+
+/// The charts that draw every run (the divergence chart leaves run 0 out).
+constexpr std::array kRunCharts{ChartPanel::kMomentumChart, ChartPanel::kEnergyChart,
+                                ChartPanel::kResidualChart};
 
 /// A panel on screen (offscreen) and wide enough for 2000 points per curve, as in a dock.
 class ChartPanelTest : public testing::Test {
@@ -56,22 +110,346 @@ TEST_F(ChartPanelTest, CompareModeDrawsBothRunsInEveryChart) {
   addRun(panel, 0, 600, 1.0 / 60.0);
   addRun(panel, 1, 600, 1.0 / 60.0);
   panel.refresh();
-  for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
-    EXPECT_GT(panel.displayedPointCount(chart, 0), 0) << "chart " << chart;
-    EXPECT_GT(panel.displayedPointCount(chart, 1), 0) << "chart " << chart;
+  for (const int chart : kRunCharts) {
+    EXPECT_EQ(panel.displayedPointCount(chart, 0), 600) << "chart " << chart;
+    EXPECT_EQ(panel.displayedPointCount(chart, 1), 600) << "chart " << chart;
   }
+  EXPECT_TRUE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, 0), 0);  // no self-divergence
+  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, 1), 600);
 }
 
 TEST_F(ChartPanelTest, SingleModeDrawsRunZeroOnly) {
   panel.reset({"elastic"});
   addRun(panel, 0, 600, 1.0 / 60.0);
-  addRun(panel, 1, 600, 1.0 / 60.0);  // no such run: ignored
+  addRun(panel, 1, 600, 1.0 / 60.0);    // no such run: ignored
+  addBaseline(panel, 600, 1.0 / 60.0);  // no baseline shown: ignored
   panel.refresh();
-  for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
+  for (const int chart : kRunCharts) {
     EXPECT_EQ(panel.displayedPointCount(chart, 0), 600) << "chart " << chart;
     EXPECT_EQ(panel.displayedPointCount(chart, 1), 0) << "chart " << chart;
   }
   EXPECT_EQ(panel.storedSampleCount(1), 0u);
+  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
+  // One run and no baseline: nothing diverges, so the divergence chart and the run legend step
+  // aside.
+  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_TRUE(panel.runLegendText().isEmpty());
+}
+
+/// Checks that `points` are at the sample times of a run fed every `dt` from 0 and that each y
+/// is what `expected` says for that time.
+void expectPlotted(const QList<QPointF>& points, int count, double dt,
+                   const std::function<double(double)>& expected, const std::string& what) {
+  ASSERT_EQ(points.size(), count) << what;
+  for (qsizetype i = 0; i < points.size(); ++i) {
+    EXPECT_EQ(points[i].x(), static_cast<double>(i) * dt) << what << " point " << i;
+    EXPECT_EQ(points[i].y(), expected(points[i].x())) << what << " at t = " << points[i].x();
+  }
+}
+
+/// Four runs and the chaos baseline, as a compare session with the baseline on shows them.
+class FourRunsAndBaseline : public ChartPanelTest {
+ protected:
+  static constexpr int kRuns = 4;
+  static constexpr int kSamples = 600;
+  static constexpr double kDt = 1.0 / 60.0;  // 10 s: inside the 20 s window
+
+  FourRunsAndBaseline() {
+    panel.reset({"elastic", "elastic:substeps=16", "exact", "box2d:substeps=8"});
+    panel.setBaselineShown(true);
+    for (int run = 0; run < kRuns; ++run)
+      addRun(panel, run, kSamples, kDt);
+    addBaseline(panel, kSamples, kDt);
+    panel.refresh();
+  }
+};
+
+TEST_F(FourRunsAndBaseline, EachRunPlotsTheMetricsItWasFed) {
+  for (int run = 0; run < kRuns; ++run) {
+    const std::string name = "run " + std::to_string(run);
+    const auto momentum = [run](double time) { return metricsAt(time, run).sums.momentum; };
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kMomentumChart, run, 0), kSamples, kDt,
+        [&](double time) { return momentum(time).x; }, name + " px");
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kMomentumChart, run, 1), kSamples, kDt,
+        [&](double time) { return momentum(time).y; }, name + " py");
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kMomentumChart, run, 2), kSamples, kDt,
+        [&](double time) { return std::hypot(momentum(time).x, momentum(time).y); }, name + " |p|");
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kEnergyChart, run, 0), kSamples, kDt,
+        [run](double time) { return metricsAt(time, run).sums.kineticEnergy; }, name + " kinetic");
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kEnergyChart, run, 1), kSamples, kDt,
+        [run](double time) { return metricsAt(time, run).sums.potentialEnergy; },
+        name + " potential");
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kEnergyChart, run, 2), kSamples, kDt,
+        [run](double time) { return metricsAt(time, run).sums.totalEnergy(); }, name + " total");
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kResidualChart, run, 0), kSamples, kDt,
+        [run](double time) { return metricsAt(time, run).energyResidual; }, name + " residual");
+    if (run == 0) {
+      EXPECT_TRUE(panel.displayedPoints(ChartPanel::kDivergenceChart, 0).isEmpty());
+    } else {
+      expectPlotted(
+          panel.displayedPoints(ChartPanel::kDivergenceChart, run), kSamples, kDt,
+          [run](double time) { return divergenceAt(time, run).rmsPositionDifference; },
+          name + " divergence");
+    }
+  }
+}
+
+TEST_F(FourRunsAndBaseline, EachRunIsDrawnInItsColour) {
+  for (int run = 0; run < kRuns; ++run) {
+    for (const int chart : kRunCharts)
+      EXPECT_EQ(panel.displayedPen(chart, run).color(), ChartPanel::runColour(run)) << chart;
+    if (run > 0) {
+      EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, run).color(),
+                ChartPanel::runColour(run));
+      EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, run).style(), Qt::SolidLine);
+    }
+  }
+  EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, 0).style(), Qt::NoPen);
+  // The run legend names every run, run 0 as the reference.
+  const QString legend = panel.runLegendText();
+  EXPECT_TRUE(legend.contains("elastic (reference)")) << legend.toStdString();
+  for (const char* label : {"elastic:substeps=16", "exact", "box2d:substeps=8"})
+    EXPECT_TRUE(legend.contains(label)) << label;
+}
+
+TEST_F(FourRunsAndBaseline, BaselineIsAGreyDashedDivergenceCurveOnly) {
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), kSamples, kDt,
+      [](double time) { return baselineDivergenceAt(time).rmsPositionDifference; }, "baseline");
+  const QPen pen = panel.displayedPen(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun);
+  EXPECT_EQ(pen.color(), ChartPanel::baselineColour());
+  EXPECT_EQ(pen.style(), Qt::CustomDashLine);
+  EXPECT_EQ(ChartPanel::baselineColour().saturation(), 0);  // grey
+  for (const int chart : kRunCharts)
+    EXPECT_EQ(panel.displayedPointCount(chart, ChartPanel::kBaselineRun), 0) << chart;
+  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), static_cast<std::size_t>(kSamples));
+}
+
+TEST_F(FourRunsAndBaseline, DivergenceAxisIsLogAndBracketsTheData) {
+  // The fed divergences run from 1/3 · 1e-12 m (run 1 at t = 0) to 1e3 m (run 3 at 10 s).
+  double lowest = HUGE_VAL;
+  double highest = 0.0;
+  for (const int run : {1, 2, 3, ChartPanel::kBaselineRun}) {
+    for (const QPointF& point : panel.displayedPoints(ChartPanel::kDivergenceChart, run)) {
+      lowest = std::min(lowest, point.y());
+      highest = std::max(highest, point.y());
+    }
+  }
+  ASSERT_LT(lowest, 1e-12);
+  ASSERT_GT(highest, 1e2);
+  const auto [axisMin, axisMax] = panel.displayedYRange(ChartPanel::kDivergenceChart);
+  EXPECT_LE(axisMin, lowest);
+  EXPECT_GE(axisMax, highest);
+  // Snug: within a label step of the data (16 decades on a plot with room for four or five
+  // labels: four decades at most), not a default range.
+  EXPECT_GE(axisMin, lowest / 1e4);
+  EXPECT_LE(axisMax, highest * 1e4);
+  // And it is a log axis that shows them.
+  const QList<TimeChart*> charts = panel.findChildren<TimeChart*>();
+  const auto divergence = std::find_if(charts.begin(), charts.end(), [](const TimeChart* chart) {
+    return chart->chart()->title().startsWith("Divergence");
+  });
+  ASSERT_NE(divergence, charts.end());
+  const QList<QAbstractAxis*> valueAxes = (*divergence)->chart()->axes(Qt::Vertical);
+  ASSERT_EQ(valueAxes.size(), 1);
+  ASSERT_EQ(valueAxes[0]->type(), QAbstractAxis::AxisTypeLogValue);
+  const auto* logAxis = static_cast<const QLogValueAxis*>(valueAxes[0]);
+  EXPECT_EQ(logAxis->min(), axisMin);
+  EXPECT_EQ(logAxis->max(), axisMax);
+  // Labels at whole decades, a handful of them.
+  const double decadesPerLabel = std::log10(logAxis->base());
+  EXPECT_EQ(decadesPerLabel, std::round(decadesPerLabel));
+  EXPECT_LE(std::log10(axisMax / axisMin) / decadesPerLabel, 6.0);
+}
+
+TEST_F(ChartPanelTest, DivergenceAxisSkipsValuesThatAreNotPositive) {
+  panel.reset({"elastic", "exact"});
+  // Right after a synchronise the runs are identical: a divergence of 0, which a log axis has
+  // no place for. It is left out, and so is a (nonsensical) negative one.
+  const std::array values{0.0, 1e-12, 1e-9, -1.0, 1e-6, 1e-3, 1.0, 1e3};
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    Divergence divergence;
+    divergence.rmsPositionDifference = values[i];
+    const double time = 0.1 * static_cast<double>(i);
+    panel.addSample(0, metricsAt(time), {});
+    panel.addSample(1, metricsAt(time, 1), divergence);
+  }
+  panel.refresh();
+  const QList<QPointF> points = panel.displayedPoints(ChartPanel::kDivergenceChart, 1);
+  ASSERT_EQ(points.size(), 6);
+  EXPECT_EQ(points.front().y(), 1e-12);
+  EXPECT_EQ(points.back().y(), 1e3);
+  const auto [axisMin, axisMax] = panel.displayedYRange(ChartPanel::kDivergenceChart);
+  EXPECT_GT(axisMin, 0.0);
+  EXPECT_LE(axisMin, 1e-12);
+  EXPECT_GE(axisMax, 1e3);
+  EXPECT_GE(axisMin, 1e-15);
+  EXPECT_LE(axisMax, 1e6);
+}
+
+TEST_F(ChartPanelTest, DivergenceChartNeedsTwoRunsOrTheBaseline) {
+  panel.reset({"elastic"});
+  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+  panel.setBaselineShown(true);
+  EXPECT_TRUE(panel.chartShown(ChartPanel::kDivergenceChart));
+  panel.setBaselineShown(false);
+  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+  panel.addRun("exact");
+  EXPECT_TRUE(panel.chartShown(ChartPanel::kDivergenceChart));
+  toggleNamed(panel, "divergenceToggle")->setChecked(false);
+  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_TRUE(panel.chartShown(ChartPanel::kEnergyChart));
+  toggleNamed(panel, "divergenceToggle")->setChecked(true);
+  panel.removeRun(1);
+  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+}
+
+TEST_F(ChartPanelTest, HidingTheBaselineDropsItsHistory) {
+  panel.reset({"elastic", "exact"});
+  panel.setBaselineShown(true);
+  addBaseline(panel, 50, 0.01);
+  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 50u);
+  panel.setBaselineShown(false);
+  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
+  addBaseline(panel, 50, 0.01);  // ignored while hidden
+  panel.setBaselineShown(true);
+  panel.refresh();
+  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
+  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), 0);
+}
+
+TEST_F(ChartPanelTest, AddingARunKeepsTheOthersHistory) {
+  panel.reset({"elastic"});
+  addRun(panel, 0, 300, 0.01);  // 0 … 2.99 s alone
+  panel.addRun("exact");        // compare mode begins at 3 s
+  EXPECT_EQ(panel.runCount(), 2);
+  EXPECT_EQ(panel.storedSampleCount(0), 300u);
+  EXPECT_EQ(panel.storedSampleCount(1), 0u);
+  addRun(panel, 0, 100, 0.01, 3.0);
+  addRun(panel, 1, 100, 0.01, 3.0);
+  panel.addRun("box2d");
+  addRun(panel, 2, 10, 0.01, 4.0);
+  panel.refresh();
+  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), 400);
+  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 1), 100);
+  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 2), 10);
+  // Run 0's curve still starts at t = 0 with the values it had then.
+  const QList<QPointF> total = panel.displayedPoints(ChartPanel::kEnergyChart, 0, 2);
+  ASSERT_FALSE(total.isEmpty());
+  EXPECT_EQ(total.front(), QPointF(0.0, metricsAt(0.0).sums.totalEnergy()));
+  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 2, 2).color(), ChartPanel::runColour(2));
+}
+
+TEST_F(ChartPanelTest, RemovingARunShiftsTheLaterOnesDown) {
+  panel.reset({"elastic", "exact", "box2d", "xpbd"});
+  for (int run = 0; run < 4; ++run)
+    addRun(panel, run, 10 * (run + 1), 0.01);
+  panel.removeRun(1);
+  panel.refresh();
+  ASSERT_EQ(panel.runCount(), 3);
+  EXPECT_EQ(panel.storedSampleCount(0), 10u);
+  EXPECT_EQ(panel.storedSampleCount(1), 30u);  // box2d's
+  EXPECT_EQ(panel.storedSampleCount(2), 40u);  // xpbd's
+  EXPECT_EQ(panel.storedSampleCount(3), 0u);
+  // The run now at index 1 plots what run 2 was fed, in the colour of index 1.
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kEnergyChart, 1, 2), 30, 0.01,
+      [](double time) { return metricsAt(time, 2).sums.totalEnergy(); }, "box2d total");
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kDivergenceChart, 2), 40, 0.01,
+      [](double time) { return divergenceAt(time, 3).rmsPositionDifference; }, "xpbd divergence");
+  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 1, 2).color(), ChartPanel::runColour(1));
+  const QString legend = panel.runLegendText();
+  EXPECT_FALSE(legend.contains("exact")) << legend.toStdString();
+  EXPECT_LT(legend.indexOf("box2d"), legend.indexOf("xpbd"));
+
+  // Removing run 0 makes the next the reference.
+  panel.removeRun(0);
+  EXPECT_EQ(panel.storedSampleCount(0), 30u);
+  EXPECT_TRUE(panel.runLegendText().contains("box2d (reference)"));
+  panel.removeRun(1);
+  panel.removeRun(0);  // the last run stays
+  panel.removeRun(5);  // no such run
+  EXPECT_EQ(panel.runCount(), 1);
+  EXPECT_EQ(panel.storedSampleCount(0), 30u);
+}
+
+TEST_F(ChartPanelTest, RenamingARunKeepsItsHistory) {
+  QTemporaryDir directory;
+  ASSERT_TRUE(directory.isValid());
+  const QString path = directory.filePath("charts.csv");
+  panel.reset({"elastic", "exact"});
+  addRun(panel, 0, 20, 0.01);
+  addRun(panel, 1, 20, 0.01);
+  panel.renameRun(1, "elastic:substeps=16");
+  EXPECT_EQ(panel.storedSampleCount(1), 20u);
+  panel.refresh();
+  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 1), 20);
+  EXPECT_TRUE(panel.runLegendText().contains("elastic:substeps=16"));
+  EXPECT_FALSE(panel.runLegendText().contains("exact"));
+  ASSERT_TRUE(panel.exportCsv(path));
+  const QList<QByteArray> lines = csvLines(path);
+  ASSERT_EQ(lines.size(), 41);
+  EXPECT_TRUE(lines[21].startsWith("elastic:substeps=16,")) << lines[21].toStdString();
+  EXPECT_TRUE(lines[40].startsWith("elastic:substeps=16,"));
+}
+
+TEST_F(ChartPanelTest, EightRunsAreTheMost) {
+  QStringList labels;
+  for (int run = 0; run < 9; ++run)
+    labels.append(QStringLiteral("elastic:substeps=%1").arg(1 << run));
+  panel.reset(labels);
+  EXPECT_EQ(panel.runCount(), ChartPanel::kMaxRuns);
+  EXPECT_EQ(ChartPanel::kMaxRuns, 8);
+  panel.addRun("exact");  // a ninth: ignored
+  EXPECT_EQ(panel.runCount(), 8);
+  for (int run = 0; run < 9; ++run)
+    addRun(panel, run, 100 + run, 0.01);
+  panel.refresh();
+  for (int run = 0; run < 8; ++run) {
+    EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, run), 100 + run);
+    EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, run),
+              run == 0 ? 0 : 100 + run);
+    EXPECT_EQ(panel.displayedPen(ChartPanel::kMomentumChart, run, 2).color(),
+              ChartPanel::runColour(run));
+    EXPECT_TRUE(panel.runLegendText().contains(labels[run] + (run == 0 ? " (" : "")));
+  }
+  EXPECT_EQ(panel.storedSampleCount(8), 0u);
+  EXPECT_FALSE(panel.runLegendText().contains(labels[8]));
+}
+
+TEST(ChartColours, EightRunColoursAreDistinctAndReadableOnBlack) {
+  const auto distance = [](const QColor& a, const QColor& b) {
+    return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
+  };
+  // WCAG's contrast ratio against the near-black plot (and the black simulation view).
+  const auto luminance = [](const QColor& colour) {
+    const auto linear = [](double channel) {
+      return channel <= 0.04045 ? channel / 12.92 : std::pow((channel + 0.055) / 1.055, 2.4);
+    };
+    return 0.2126 * linear(colour.redF()) + 0.7152 * linear(colour.greenF()) +
+           0.0722 * linear(colour.blueF());
+  };
+  const double black = luminance(QColor(0x05, 0x05, 0x07));
+  for (int run = 0; run < ChartPanel::kMaxRuns; ++run) {
+    const QColor colour = ChartPanel::runColour(run);
+    EXPECT_GE((luminance(colour) + 0.05) / (black + 0.05), 4.5) << colour.name().toStdString();
+    EXPECT_GE(distance(colour, ChartPanel::baselineColour()), 80.0) << colour.name().toStdString();
+    EXPECT_GE(colour.saturation(), 100) << colour.name().toStdString();  // not a grey
+    for (int other = 0; other < run; ++other) {
+      EXPECT_GE(distance(colour, ChartPanel::runColour(other)), 80.0)
+          << colour.name().toStdString() << " vs "
+          << ChartPanel::runColour(other).name().toStdString();
+    }
+  }
 }
 
 TEST_F(ChartPanelTest, ViewWaitsForARefresh) {
@@ -94,7 +472,7 @@ TEST_F(ChartPanelTest, PointsStayBoundedForLongRuns) {
     panel.setShowWholeRun(wholeRun);
     panel.refresh();
     for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
-      for (int run = 0; run < 2; ++run) {
+      for (int run = chart == ChartPanel::kDivergenceChart ? 1 : 0; run < 2; ++run) {
         EXPECT_GT(panel.displayedPointCount(chart, run), kMaxPoints / 4);
         EXPECT_LE(panel.displayedPointCount(chart, run), kMaxPoints);
       }
@@ -114,19 +492,29 @@ TEST_F(ChartPanelTest, WholeRunShowsMoreThanTheWindow) {
 }
 
 TEST_F(ChartPanelTest, ResetClearsSamplesPointsAndMarkers) {
-  panel.reset({"elastic", "exact"});
+  panel.reset({"elastic", "exact", "box2d"});
+  panel.setBaselineShown(true);
   addRun(panel, 0, 300, 0.01);
   addRun(panel, 1, 300, 0.01);
+  addRun(panel, 2, 300, 0.01);
+  addBaseline(panel, 300, 0.01);
   panel.addMarker(1.0, "grab");
   panel.refresh();
-  panel.reset({"elastic"});
+  ASSERT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), 300);
+  panel.reset({"elastic", "exact"});
   panel.refresh();
+  EXPECT_EQ(panel.runCount(), 2);
   EXPECT_EQ(panel.storedSampleCount(0), 0u);
+  EXPECT_EQ(panel.storedSampleCount(1), 0u);
+  EXPECT_EQ(panel.storedSampleCount(2), 0u);
+  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
   EXPECT_EQ(panel.markerCount(), 0);
   for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
-    EXPECT_EQ(panel.displayedPointCount(chart, 0), 0);
-    EXPECT_EQ(panel.displayedPointCount(chart, 1), 0);
+    for (const int run : {0, 1, 2, ChartPanel::kBaselineRun})
+      EXPECT_EQ(panel.displayedPointCount(chart, run), 0) << chart << " " << run;
   }
+  // Whether the baseline is shown is a setting, not history: it stays.
+  EXPECT_TRUE(panel.baselineShown());
 }
 
 TEST_F(ChartPanelTest, MarkersShowWhileTheirTimeIsOnTheAxis) {
@@ -139,17 +527,11 @@ TEST_F(ChartPanelTest, MarkersShowWhileTheirTimeIsOnTheAxis) {
   EXPECT_EQ(panel.displayedMarkerCount(), 2);
 
   for (int i = 600; i < 2400; ++i)
-    panel.addSample(0, metricsAt(i / 60.0));  // 40 s
+    panel.addSample(0, metricsAt(i / 60.0), {});  // 40 s
   panel.refresh();
   EXPECT_EQ(panel.displayedMarkerCount(), 0);  // the 20 s window has scrolled past them
   panel.setShowWholeRun(true);
   EXPECT_EQ(panel.displayedMarkerCount(), 2);
-}
-
-QAction* toggleNamed(ChartPanel& panel, const char* name) {
-  auto* toggle = panel.findChild<QAction*>(name);
-  EXPECT_NE(toggle, nullptr) << name;
-  return toggle;
 }
 
 TEST_F(ChartPanelTest, TogglesHideQuantitiesAndEmptyCharts) {
@@ -179,7 +561,10 @@ TEST_F(ChartPanelTest, PlotAreasLineUpSoTheirTimeAxesMatch) {
   addRun(panel, 0, 600, 1.0 / 60.0);
   addRun(panel, 1, 600, 1.0 / 60.0);
   panel.refresh();
-  QApplication::processEvents();
+  // Each chart lays itself out in a posted event and lining them up takes another round (as
+  // in exportPng): on screen that is the next frame.
+  for (int round = 0; round < 3; ++round)
+    QApplication::processEvents();
   const QList<TimeChart*> charts = panel.findChildren<TimeChart*>();
   ASSERT_EQ(charts.size(), ChartPanel::kChartCount);
   const auto plotEdgesOf = [](const TimeChart* chart) {
@@ -199,36 +584,56 @@ TEST_F(ChartPanelTest, CsvHoldsEveryStoredSampleAndParsesBack) {
   QTemporaryDir directory;
   ASSERT_TRUE(directory.isValid());
   const QString path = directory.filePath("charts.csv");
-  panel.reset({"elastic", "exact, tuned"});
+  panel.reset({"elastic", "exact, tuned", "box2d:substeps=8"});
+  panel.setBaselineShown(true);
   addRun(panel, 0, 250, 0.01);
   addRun(panel, 1, 40, 0.05);
+  addRun(panel, 2, 70, 0.02);
+  addBaseline(panel, 30, 0.1);
   ASSERT_TRUE(panel.exportCsv(path));
 
-  QFile file(path);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-  const QList<QByteArray> lines = file.readAll().split('\n');
-  ASSERT_GE(lines.size(), 2);
+  const QList<QByteArray> lines = csvLines(path);
+  ASSERT_GE(lines.size(), 1);
   EXPECT_EQ(lines[0], kChartCsvHeader);
-  ASSERT_TRUE(lines.back().isEmpty());  // the last row ends its line too
-  ASSERT_EQ(static_cast<std::size_t>(lines.size() - 2),
-            panel.storedSampleCount(0) + panel.storedSampleCount(1));
+  // The columns of `fooball-cli run --metrics` it had, then those of `compare`.
+  EXPECT_TRUE(
+      lines[0].startsWith("run,time,kinetic_energy,potential_energy,total_energy,"
+                          "momentum_x,momentum_y,momentum_magnitude,energy_residual,"
+                          "relative_energy_residual,"));
+  EXPECT_TRUE(lines[0].endsWith(",rms_position_difference,max_position_difference"));
+  ASSERT_EQ(static_cast<std::size_t>(lines.size() - 1),
+            panel.storedSampleCount(0) + panel.storedSampleCount(1) + panel.storedSampleCount(2) +
+                panel.storedSampleCount(ChartPanel::kBaselineRun));
 
-  int rowsPerRun[2] = {0, 0};
-  for (qsizetype i = 1; i + 1 < lines.size(); ++i) {
+  constexpr int kBaselineRow = 3;
+  std::array<int, 4> rowsPerRun{};
+  int lastRun = 0;
+  for (qsizetype i = 1; i < lines.size(); ++i) {
     QByteArray line = lines[i];
     int run = 0;
     if (line.startsWith("\"exact, tuned\",")) {
       run = 1;
       line.remove(0, static_cast<qsizetype>(sizeof("\"exact, tuned\"") - 1));
       line.prepend("exact");
+    } else if (line.startsWith("box2d:substeps=8,")) {
+      run = 2;
+    } else if (line.startsWith("baseline,")) {
+      run = kBaselineRow;
     }
+    EXPECT_GE(run, lastRun) << "runs in order, the baseline last";
+    lastRun = run;
     const QList<QByteArray> fields = line.split(',');
-    ASSERT_EQ(fields.size(), 10) << line.toStdString();
-    EXPECT_EQ(fields[0], run == 0 ? "elastic" : "exact");
-    ++rowsPerRun[run];
+    ASSERT_EQ(fields.size(), 12) << line.toStdString();
+    constexpr std::array kRunFields{"elastic", "exact", "box2d:substeps=8", "baseline"};
+    EXPECT_EQ(fields[0], kRunFields[static_cast<std::size_t>(run)]);
+    ++rowsPerRun[static_cast<std::size_t>(run)];
 
     const double time = fields[1].toDouble();
-    const Metrics expected = metricsAt(time, run);
+    const bool baseline = run == kBaselineRow;
+    const Metrics expected = baseline ? baselineMetricsAt(time) : metricsAt(time, run);
+    const Divergence divergence = baseline ? baselineDivergenceAt(time) : divergenceAt(time, run);
+    const double initialEnergy =
+        (baseline ? baselineMetricsAt(0.0) : metricsAt(0.0, run)).sums.totalEnergy();
     EXPECT_EQ(fields[2].toDouble(), expected.sums.kineticEnergy);
     EXPECT_EQ(fields[3].toDouble(), expected.sums.potentialEnergy);
     EXPECT_EQ(fields[4].toDouble(), expected.sums.totalEnergy());
@@ -236,11 +641,32 @@ TEST_F(ChartPanelTest, CsvHoldsEveryStoredSampleAndParsesBack) {
     EXPECT_EQ(fields[6].toDouble(), expected.sums.momentum.y);
     EXPECT_EQ(fields[7].toDouble(), std::hypot(expected.sums.momentum.x, expected.sums.momentum.y));
     EXPECT_EQ(fields[8].toDouble(), expected.energyResidual);
-    EXPECT_EQ(fields[9].toDouble(),
-              expected.energyResidual / std::abs(metricsAt(0.0, run).sums.totalEnergy()));
+    EXPECT_EQ(fields[9].toDouble(), expected.energyResidual / std::abs(initialEnergy));
+    EXPECT_EQ(fields[10].toDouble(), divergence.rmsPositionDifference);
+    EXPECT_EQ(fields[11].toDouble(), divergence.maxPositionDifference);
+    if (run == 0) {
+      EXPECT_EQ(fields[10], "0");  // run 0 is the reference
+      EXPECT_EQ(fields[11], "0");
+    }
   }
-  EXPECT_EQ(rowsPerRun[0], 250);
-  EXPECT_EQ(rowsPerRun[1], 40);
+  EXPECT_EQ(rowsPerRun, (std::array{250, 40, 70, 30}));
+}
+
+TEST_F(ChartPanelTest, CsvLeavesOutAHiddenBaseline) {
+  QTemporaryDir directory;
+  ASSERT_TRUE(directory.isValid());
+  const QString path = directory.filePath("charts.csv");
+  panel.reset({"elastic", "exact"});
+  panel.setBaselineShown(true);
+  addRun(panel, 0, 20, 0.01);
+  addRun(panel, 1, 20, 0.01);
+  addBaseline(panel, 20, 0.01);
+  panel.setBaselineShown(false);
+  ASSERT_TRUE(panel.exportCsv(path));
+  const QList<QByteArray> lines = csvLines(path);
+  ASSERT_EQ(lines.size(), 41);
+  EXPECT_FALSE(std::any_of(lines.begin(), lines.end(),
+                           [](const QByteArray& line) { return line.startsWith("baseline,"); }));
 }
 
 TEST_F(ChartPanelTest, CsvToAnUnwritablePathFails) {
@@ -263,13 +689,10 @@ bool containsColour(const QImage& image, const QColor& colour, int tolerance) {
   return false;
 }
 
-TEST_F(ChartPanelTest, PngLoadsBackWithBothRunsColours) {
+TEST_F(FourRunsAndBaseline, PngLoadsBackWithEveryRunsColourAndTheBaselines) {
   QTemporaryDir directory;
   ASSERT_TRUE(directory.isValid());
   const QString path = directory.filePath("charts.png");
-  panel.reset({"elastic", "exact"});
-  addRun(panel, 0, 1200, 1.0 / 60.0);
-  addRun(panel, 1, 1200, 1.0 / 60.0);
   panel.addMarker(8.0, "gravity");
   ASSERT_TRUE(panel.exportPng(path));
 
@@ -277,8 +700,10 @@ TEST_F(ChartPanelTest, PngLoadsBackWithBothRunsColours) {
   ASSERT_TRUE(image.load(path));
   EXPECT_EQ(image.width(), 2 * panel.width());  // twice the screen's pixels
   EXPECT_GT(image.height(), panel.height());    // the panel less its toolbar, doubled
-  EXPECT_TRUE(containsColour(image, ChartPanel::runColour(0), 24));
-  EXPECT_TRUE(containsColour(image, ChartPanel::runColour(1), 24));
+  for (int run = 0; run < kRuns; ++run) {
+    EXPECT_TRUE(containsColour(image, ChartPanel::runColour(run), 24)) << run;
+  }
+  EXPECT_TRUE(containsColour(image, ChartPanel::baselineColour(), 6));
 }
 
 TEST(HiddenChartPanel, PngDrawsTheChartsAtThePanelsSize) {
@@ -405,6 +830,61 @@ TEST(ChartDecimation, FewSamplesAreAllKeptAndNonFiniteOnesLeftOut) {
   QList<QPointF> points;
   fillSeriesPoints(history, Quantity::RelativeEnergyResidual, 0.0, 1.0, kMaxPoints, points);
   EXPECT_EQ(points.size(), 9);
+  // For a log axis the zero at i = 0 goes too.
+  fillSeriesPoints(history, Quantity::RelativeEnergyResidual, 0.0, 1.0, kMaxPoints, points, true);
+  EXPECT_EQ(points.size(), 8);
+}
+
+TEST(ChartDecimation, LogAxisKeepsOnlyPositiveValuesWhenDecimating) {
+  SampleHistory history;
+  for (int i = 0; i < 20'000; ++i) {
+    ChartSample sample;
+    sample.time = i * 0.001;
+    sample[Quantity::RmsPositionDifference] = i % 2 == 0 ? 0.0 : 1e-9 * (1 + i);
+    history.add(sample);
+  }
+  QList<QPointF> points;
+  const ValueRange range = fillSeriesPoints(history, Quantity::RmsPositionDifference, 0.0, 20.0,
+                                            kMaxPoints, points, true);
+  EXPECT_LE(points.size(), kMaxPoints);
+  EXPECT_GT(points.size(), kMaxPoints / 4);
+  EXPECT_TRUE(std::all_of(points.begin(), points.end(),
+                          [](const QPointF& point) { return point.y() > 0.0; }));
+  // The decimated stretches' lowest values are the zeros, so what is left of them is their
+  // highest: the curve keeps its upper envelope and its peak.
+  EXPECT_GT(range.low, 0.0);
+  EXPECT_EQ(range.high, 1e-9 * 20'000);
+}
+
+TEST(ChartAxes, LogAxisEndsOnLabelledDecadesAroundTheData) {
+  ValueRange data;
+  data.include(3e-13);
+  data.include(2e2);
+  const LogAxisScale scale = followLogValues(data, std::nullopt, 6);
+  EXPECT_LE(scale.min(), 3e-13);
+  EXPECT_GE(scale.max(), 2e2);
+  EXPECT_EQ((scale.highExponent - scale.lowExponent) % scale.decadesPerTick, 0);
+  EXPECT_LE((scale.highExponent - scale.lowExponent) / scale.decadesPerTick, 6);
+  EXPECT_EQ(scale.lowExponent % scale.decadesPerTick, 0);  // labels at round decades
+  // Within a decade: one decade, not a point.
+  ValueRange narrow;
+  narrow.include(2e-6);
+  narrow.include(3e-6);
+  const LogAxisScale tight = followLogValues(narrow, std::nullopt, 6);
+  EXPECT_EQ(tight.lowExponent, -6);
+  EXPECT_EQ(tight.highExponent, -5);
+  // Kept while the data wanders inside it, narrowed when the data shrinks by far more, widened
+  // when it grows out.
+  ValueRange wandered;
+  wandered.include(1e-12);
+  wandered.include(5e1);
+  const LogAxisScale kept = followLogValues(wandered, scale, 6);
+  EXPECT_EQ(kept.lowExponent, scale.lowExponent);
+  EXPECT_EQ(kept.highExponent, scale.highExponent);
+  EXPECT_EQ(followLogValues(narrow, scale, 6).lowExponent, -6);
+  ValueRange grown = narrow;
+  grown.include(5e4);
+  EXPECT_GE(followLogValues(grown, tight, 6).max(), 5e4);
 }
 
 }  // namespace

@@ -12,11 +12,13 @@ CommandLine parse(QStringList arguments) {
 
 TEST(CommandLine, ReadsEveryOption) {
   const CommandLine line =
-      parse({"--preset", "gas", "--backend", "box2d", "--compare", "exact", "--balls", "100000",
-             "--frames", "200", "--screenshot", "/tmp/shot.png"});
+      parse({"--preset", "gas", "--backend", "box2d:substeps=8", "--compare", "exact", "--compare",
+             "elastic:substeps=1", "--size", "1000x650", "--balls", "100000", "--frames", "200",
+             "--screenshot", "/tmp/shot.png"});
   EXPECT_EQ(line.preset, QStringLiteral("gas"));
-  EXPECT_EQ(line.backend, QStringLiteral("box2d"));
-  EXPECT_EQ(line.compare, QStringLiteral("exact"));
+  EXPECT_EQ(line.backend, (RunSpec{"box2d", {"substeps=8"}}));
+  EXPECT_EQ(line.compare, (std::vector<RunSpec>{{"exact", {}}, {"elastic", {"substeps=1"}}}));
+  EXPECT_EQ(line.size, QSize(1000, 650));
   EXPECT_EQ(line.balls, 100000u);
   EXPECT_EQ(line.frames, 200);
   EXPECT_EQ(line.screenshot, QStringLiteral("/tmp/shot.png"));
@@ -35,23 +37,51 @@ TEST(CommandLine, ReadsDrawingOptionsAndAttractors) {
 TEST(CommandLine, NoArgumentsIsAnInteractiveRun) {
   const CommandLine line = parse({});
   EXPECT_FALSE(line.headless());
-  EXPECT_FALSE(line.sceneFile || line.preset || line.backend || line.compare);
+  EXPECT_FALSE(line.sceneFile || line.preset || line.backend || line.size);
+  EXPECT_TRUE(line.compare.empty());
 }
 
 TEST(CommandLine, RejectsBadArgumentsWithOneLine) {
   for (const QStringList& arguments :
-       {QStringList{"--scene", "a.json", "--preset", "gas"}, QStringList{"--frames", "0"},
-        QStringList{"--frames", "ten"}, QStringList{"--balls", "-1"},
-        QStringList{"--backend", "nosuch"}, QStringList{"--compare", "nosuch"},
-        QStringList{"--unknown"}, QStringList{"stray"}, QStringList{"--frames"},
-        QStringList{"--frames", "2", "--frames", "3"}, QStringList{"--show", "sparkles"},
-        QStringList{"--attractor", "1"}, QStringList{"--attractor", "a,b"}}) {
+       {QStringList{"--scene", "a.json", "--preset", "gas"},
+        QStringList{"--frames", "0"},
+        QStringList{"--frames", "ten"},
+        QStringList{"--balls", "-1"},
+        QStringList{"--backend", "nosuch"},
+        QStringList{"--compare", "nosuch"},
+        QStringList{"--backend", "elastic:nosuch=1"},
+        QStringList{"--compare", "box2d:substeps=0"},
+        QStringList{"--compare", "elastic:substeps"},
+        QStringList{"--size", "1000"},
+        QStringList{"--size", "10x10"},
+        QStringList{"--size", "axb"},
+        QStringList{"--compare", "elastic", "--compare", "elastic", "--compare", "elastic",
+                    "--compare", "elastic", "--compare", "elastic", "--compare", "elastic",
+                    "--compare", "elastic", "--compare", "elastic"},
+        QStringList{"--unknown"},
+        QStringList{"stray"},
+        QStringList{"--frames"},
+        QStringList{"--frames", "2", "--frames", "3"},
+        QStringList{"--show", "sparkles"},
+        QStringList{"--attractor", "1"},
+        QStringList{"--attractor", "a,b"}}) {
     try {
       parse(arguments);
       ADD_FAILURE() << "accepted: " << arguments.join(' ').toStdString();
     } catch (const UsageError& error) {
       EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos);
     }
+  }
+}
+
+TEST(CommandLine, ABadRunSpecIsNamedWithTheReason) {
+  try {
+    parse({"--compare", "box2d:velocity_iterations=0"});
+    FAIL();
+  } catch (const UsageError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("box2d:velocity_iterations=0"), std::string::npos) << message;
+    EXPECT_NE(message.find("velocity_iterations"), std::string::npos) << message;
   }
 }
 

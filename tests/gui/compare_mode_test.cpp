@@ -1,103 +1,191 @@
+// Compare mode through the sidebar's run list, as a user drives it: adding, removing and
+// switching runs, the chaos baseline, and what the readout and the charts then hold.
+
+#include <QCheckBox>
 #include <QComboBox>
+#include <QPushButton>
 #include <QSpinBox>
+#include <QToolButton>
 #include <algorithm>
 #include <thread>
 
 #include "backend_options_form.h"
+#include "charts/chart_panel.h"
 #include "compare_readout.h"
 #include "gui_fixture.h"
+#include "run_list_editor.h"
 #include "settings_sidebar.h"
+#include "window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {
 
-class CompareMode : public GuiTest {};
+class CompareMode : public GuiTest {
+ protected:
+  RunListEditor* runList() const { return window->sidebar()->runList(); }
 
-TEST_F(CompareMode, RunsStartTogetherFromTheCurrentStateAndStepInLockstep) {
+  /// Chooses `backend` for the new run and clicks Add run, as a user would.
+  void addRun(const QString& backend) {
+    QComboBox* box = runList()->newRunBackendBox();
+    const int index = box->findText(backend);
+    ASSERT_GE(index, 0) << backend.toStdString();
+    box->setCurrentIndex(index);
+    QTest::mouseClick(runList()->addButton(), Qt::LeftButton);
+  }
+};
+
+TEST_F(CompareMode, AddingARunRestartsEveryRunFromTheCurrentStateAndTimeCarriesOn) {
   open(fooball::testing::gas(50));
   frames(20);
   const Scene now = mainRun().scene();
-  QComboBox* compare = window->sidebar()->compareBox();
-  const int box2d = compare->findText(QStringLiteral("box2d"));
-  compare->setCurrentIndex(box2d);
-  emit compare->activated(box2d);
+  const double time = group().time();
+  ASSERT_GT(time, 0.0);
+  addRun(QStringLiteral("box2d"));
   ASSERT_EQ(runs().runCount(), 2);
+  EXPECT_EQ(runs().label(1), QStringLiteral("box2d"));
   EXPECT_TRUE(window->compareReadout()->isVisible());
   for (std::size_t i = 0; i < now.balls.size(); ++i) {
     EXPECT_EQ(runs().run(0).positions()[i], now.balls[i].position);
+    // Box2D holds float: 16 m to within half a float ulp, 1e-6 m.
     EXPECT_NEAR(runs().run(1).positions()[i].x, now.balls[i].position.x, 1e-5);
   }
-  EXPECT_EQ(runs().run(0).time(), 0.0);
-  EXPECT_EQ(runs().run(1).time(), 0.0);
+  EXPECT_EQ(runs().run(0).time(), time) << "the clock carries on";
+  EXPECT_EQ(runs().run(1).time(), time);
+  EXPECT_GT(window->charts()->markerCount(), 0) << "the restart is marked on the time axis";
   frames(30);
   EXPECT_EQ(runs().run(0).steps(), runs().run(1).steps());
   EXPECT_GT(runs().run(0).steps(), 0u);
 }
 
-TEST_F(CompareMode, SameBackendStaysIdentical) {
-  open(fooball::testing::gas(50), QStringLiteral("elastic"), QStringLiteral("elastic"));
-  frames(60);
-  const Divergence divergence = runs().divergence();
-  EXPECT_EQ(divergence.maxPositionDifference, 0.0) << "deterministic backends";
-  EXPECT_EQ(divergence.energyDifference, 0.0);
+TEST_F(CompareMode, SameSpecStaysIdenticalAndTheBaselineDepartsFromIt) {
+  open(fooball::testing::gas(200), "elastic", {"elastic"});
+  ASSERT_TRUE(group().hasBaseline()) << "compare mode shows the chaos baseline by default";
+  EXPECT_TRUE(runList()->baselineBox()->isChecked());
+  const double start = group().baselineDivergence()->rmsPositionDifference;
+  EXPECT_NEAR(start, RunGroup::kBaselineDisplacement, 1e-12);
+  frames(180);
+  const Divergence same = group().divergence(1);
+  EXPECT_EQ(same.maxPositionDifference, 0.0) << "deterministic backends";
+  EXPECT_EQ(same.energyDifference, 0.0);
+  // A 200-ball gas is chaotic: 3 s amplify 1e-9 m by far more than a factor of 10.
+  EXPECT_GT(group().baselineDivergence()->rmsPositionDifference, 10.0 * start);
 }
 
-TEST_F(CompareMode, DifferentBackendsDivergeAndTheReadoutSaysHowFar) {
-  open(fooball::testing::gas(80), QStringLiteral("elastic"), QStringLiteral("box2d"));
+TEST_F(CompareMode, TheReadoutShowsTheRunGroupsOwnDivergenceNumbers) {
+  open(fooball::testing::gas(80), "elastic", {"box2d"});
   frames(120);
-  const Divergence divergence = runs().divergence();
+  window->showDivergence();
+  const Divergence divergence = group().divergence(1);
   EXPECT_GT(divergence.maxPositionDifference, 0.0);
   EXPECT_LE(divergence.rmsPositionDifference, divergence.maxPositionDifference);
-  EXPECT_TRUE(window->compareReadout()->text().contains(QStringLiteral(" m")));
+  const QString text = window->compareReadout()->text();
+  EXPECT_TRUE(text.contains(QStringLiteral("box2d"))) << text.toStdString();
+  // The readout's figures are the group's, to the digits shown (3 significant).
+  const QString rms = QString::number(divergence.rmsPositionDifference, 'g', 3);
+  EXPECT_TRUE(text.contains(rms)) << text.toStdString() << " lacks " << rms.toStdString();
 }
 
-TEST_F(CompareMode, TurningCompareOffLeavesOneRun) {
-  open(stillBalls(), QStringLiteral("elastic"), QStringLiteral("exact"));
-  QComboBox* compare = window->sidebar()->compareBox();
-  compare->setCurrentIndex(0);
-  emit compare->activated(0);
+TEST_F(CompareMode, FourRunsOverlayEveryChartAndSideBySideGivesEachRunATile) {
+  open(fooball::testing::gas(60));
+  addRun(QStringLiteral("exact"));
+  addRun(QStringLiteral("elastic"));
+  runs().setBackendOption(2, QStringLiteral("substeps"), 1.0);
+  addRun(QStringLiteral("box2d"));
+  ASSERT_EQ(runs().runCount(), 4);
+  EXPECT_EQ(runs().label(2), QStringLiteral("elastic:substeps=1"));
+  frames(30);
+  window->charts()->refresh();
+  for (int run = 0; run < 4; ++run) {
+    EXPECT_GT(window->charts()->storedSampleCount(run), 5u) << "run " << run;
+    EXPECT_GT(window->charts()->displayedPointCount(ChartPanel::kEnergyChart, run), 1)
+        << "run " << run;
+  }
+  window->actions().sideBySide()->trigger();
+  std::vector<QRect> boxes;
+  for (int run = 0; run < 4; ++run)
+    boxes.push_back(view()->transformForRun(run).boxRect());
+  for (int a = 0; a < 4; ++a) {
+    // Each tile keeps the box's 16:9 aspect ratio, to a pixel.
+    EXPECT_NEAR(boxes[a].width() * 9.0 / 16.0, boxes[a].height(), 1.5) << "tile " << a;
+    for (int b = a + 1; b < 4; ++b)
+      EXPECT_FALSE(boxes[a].intersects(boxes[b])) << "tiles " << a << " and " << b;
+  }
+}
+
+TEST_F(CompareMode, AddingAndRemovingRunsKeepsTheChartHistory) {
+  open(fooball::testing::gas(40));
+  frames(30);
+  const std::size_t before = window->charts()->storedSampleCount(0);
+  ASSERT_GT(before, 5u);
+  addRun(QStringLiteral("exact"));
+  addRun(QStringLiteral("box2d"));
+  EXPECT_GE(window->charts()->storedSampleCount(0), before) << "starting compare keeps history";
+  frames(30);
+  const std::size_t boxSamples = window->charts()->storedSampleCount(2);
+  ASSERT_GT(boxSamples, 5u);
+  QTest::mouseClick(runList()->removeButton(1), Qt::LeftButton);  // exact goes
+  ASSERT_EQ(runs().runCount(), 2);
+  EXPECT_EQ(runs().label(1), QStringLiteral("box2d"));
+  EXPECT_EQ(window->charts()->storedSampleCount(1), boxSamples) << "box2d's curves move up";
+  QTest::mouseClick(runList()->removeButton(1), Qt::LeftButton);
   EXPECT_EQ(runs().runCount(), 1);
-  EXPECT_FALSE(window->compareReadout()->isVisible());
+  EXPECT_GE(window->charts()->storedSampleCount(0), before + 10) << "leaving keeps history";
   frames(5);
 }
 
+TEST_F(CompareMode, ANinthRunIsRefusedWithAMessage) {
+  open(stillBalls());
+  for (int i = 1; i < int(RunGroup::kMaxRuns); ++i)
+    QTest::mouseClick(runList()->addButton(), Qt::LeftButton);
+  EXPECT_EQ(runs().runCount(), int(RunGroup::kMaxRuns));
+  EXPECT_FALSE(runList()->addButton()->isEnabled());
+  EXPECT_THROW(runs().addRun(RunSpec{"elastic", {}}), std::invalid_argument);
+  frames(3);
+  for (int run = 1; run < runs().runCount(); ++run)
+    EXPECT_EQ(runs().run(run).steps(), runs().run(0).steps());
+}
+
+TEST_F(CompareMode, HidingTheBaselineDropsItsCurves) {
+  open(fooball::testing::gas(40), "elastic", {"exact"});
+  ASSERT_TRUE(group().hasBaseline());
+  runList()->baselineBox()->click();
+  EXPECT_FALSE(group().hasBaseline());
+  EXPECT_FALSE(window->compareReadout()->text().contains(QStringLiteral("baseline")));
+}
+
 TEST_F(CompareMode, ElasticRunsShareTheCoresAndTheSidebarShowsEachShare) {
-  // The elastic backend's threads option follows the runs: all cores for one run, half each in
-  // compare mode, so two runs in lockstep do not oversubscribe the machine.
+  // A threads option follows the runs: all cores for one run, a share each with more runs
+  // (the baseline counts), so runs in lockstep do not oversubscribe the machine.
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const auto threadsOf = [&](int run) {
-    return runs().run(run).backend().options().value("threads");
+    const Backend& backend = runs().run(run).backend();
+    return backend.options().value(backend.options().withRole(OptionRole::Threads)->name);
   };
   const auto shownThreads = [&](int run) {
-    return window->sidebar()->optionsForm(run)->findChild<QSpinBox*>(
-        QStringLiteral("option_threads"));
+    return runList()->optionsForm(run)->findChild<QSpinBox*>(QStringLiteral("option_threads"));
   };
-  open(fooball::testing::gas(50), QStringLiteral("elastic"));
-  const auto specs = runs().run(0).backend().options().specs();
-  const auto threads = std::find_if(specs.begin(), specs.end(),
-                                    [](const OptionSpec& spec) { return spec.name == "threads"; });
-  ASSERT_NE(threads, specs.end());
+  open(fooball::testing::gas(50), "elastic");
+  const OptionSpec* threads = mainRun().backend().options().withRole(OptionRole::Threads);
+  ASSERT_NE(threads, nullptr);
   const double single = threadsOf(0);
   EXPECT_EQ(single, std::min<double>(cores, threads->max));
   ASSERT_NE(shownThreads(0), nullptr);
   EXPECT_EQ(shownThreads(0)->value(), single);
 
-  QComboBox* compare = window->sidebar()->compareBox();
-  const int elastic = compare->findText(QStringLiteral("elastic"));
-  compare->setCurrentIndex(elastic);
-  emit compare->activated(elastic);
+  addRun(QStringLiteral("elastic"));
   ASSERT_EQ(runs().runCount(), 2);
-  const double share = std::max(1, cores / 2);
+  ASSERT_TRUE(group().hasBaseline());
+  const double share = std::max(1, cores / 3);  // two runs and the baseline
   for (int run = 0; run < 2; ++run) {
     EXPECT_EQ(threadsOf(run), share) << "run " << run;
     ASSERT_NE(shownThreads(run), nullptr);
     EXPECT_EQ(shownThreads(run)->value(), share) << "run " << run;
   }
   frames(10);
-  EXPECT_EQ(runs().divergence().maxPositionDifference, 0.0) << "threads change no result";
+  EXPECT_EQ(group().divergence(1).maxPositionDifference, 0.0) << "threads change no result";
 
-  compare->setCurrentIndex(0);
-  emit compare->activated(0);
+  QTest::mouseClick(runList()->removeButton(1), Qt::LeftButton);
+  runList()->baselineBox()->click();
   EXPECT_EQ(threadsOf(0), single) << "one run again: all cores back";
 }
 

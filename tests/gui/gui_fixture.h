@@ -6,6 +6,8 @@
 #include <QStringList>
 #include <QtTest/QTest>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "fooball/scene.h"
 #include "main_window.h"
@@ -22,13 +24,15 @@ inline constexpr double kFrame = 1.0 / 60.0;  // s, one frame of physics
 /// instead of showing message boxes, and waits for every step.
 class GuiTest : public ::testing::Test {
  protected:
-  void open(const Scene& scene, const QString& backend = QStringLiteral("elastic"),
-            const QString& compare = QString()) {
+  /// `backend` and each of `compare` are run specs ("elastic", "box2d:substeps=8").
+  void open(const Scene& scene, const std::string& backend = "elastic",
+            const std::vector<std::string>& compare = {}) {
     StartupOptions options;
     options.scene = scene;
     options.sourceName = QStringLiteral("test");
-    options.backend = backend;
-    options.compare = compare;
+    options.runs = {parseRunSpec(backend)};
+    for (const std::string& spec : compare)
+      options.runs.push_back(parseRunSpec(spec));
     options.rememberSettings = false;
     window = std::make_unique<MainWindow>(options);
     window->setErrorReporter(
@@ -42,7 +46,8 @@ class GuiTest : public ::testing::Test {
   }
 
   RunController& runs() const { return window->runs(); }
-  const Simulation& mainRun() const { return runs().run(RunController::kMainRun); }
+  const Simulation& mainRun() const { return runs().run(0); }
+  const RunGroup& group() const { return runs().group(); }
   SimulationView* view() const { return window->view(); }
 
   /// The view pixel showing `point` (m) in run `runIndex`'s box.

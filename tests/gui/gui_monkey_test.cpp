@@ -14,6 +14,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QToolButton>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,11 +22,14 @@
 #include <sstream>
 #include <string>
 
+#include "backend_profiles.h"
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "log_slider.h"
 #include "robustness/case_run.h"
+#include "run_list_editor.h"
 #include "settings_sidebar.h"
+#include "window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -47,6 +51,7 @@ const std::uint64_t kDefaultSeed = 20261122;
 const std::uint64_t kDefaultActions = sanitized() ? 2000 : 3000;
 const int kMaxBalls = sanitized() ? 300 : 1000;
 constexpr int kActionsPerBatch = 25;
+constexpr int kMaxMonkeyRuns = 3;
 /// The same actions with every step left to run in the background: fewer, as most steps are
 /// given up and the window's work, not the physics, is what they test.
 const std::uint64_t kBackgroundActions = sanitized() ? 500 : 1000;
@@ -138,14 +143,37 @@ class GuiMonkey : public GuiTest {
         return "balls " + std::to_string(count);
       }
       case 5: {
-        QComboBox* box = sidebar_->backendBox();
+        QComboBox* box = sidebar_->runList()->backendBox(0);
         choose(box, uniform(0, box->count() - 1));
         return "backend " + box->currentText().toStdString();
       }
-      case 6: {  // compare on (any backend) or off (index 0)
-        QComboBox* box = sidebar_->compareBox();
-        choose(box, chance(0.4) ? 0 : uniform(0, box->count() - 1));
-        return "compare " + box->currentText().toStdString();
+      case 6: {  // add a run, remove one, switch a run's backend or the chaos baseline
+        RunListEditor* list = sidebar_->runList();
+        const int run = uniform(0, list->rowCount() - 1);
+        // Up to three runs: more than two exercises N-way compare, and every run more costs
+        // another whole simulation per step. The monkey waits for every step, so a compare run
+        // is never of a backend whose step can take minutes (its profile says so); run 0 still
+        // may be, as before compare mode was N-way.
+        if (chance(0.3) && list->rowCount() < kMaxMonkeyRuns) {
+          QComboBox* backends = list->newRunBackendBox();
+          choose(backends, uniform(0, backends->count() - 1));
+          if (fooball::testing::profileFor(backends->currentText().toStdString())
+                  .stepsCanTakeMinutes)
+            return "add run: skipped " + backends->currentText().toStdString();
+          list->addButton()->click();
+          return "add run " + backends->currentText().toStdString();
+        }
+        if (chance(0.3) && list->removeButton(run)->isVisible()) {
+          list->removeButton(run)->click();
+          return "remove run " + std::to_string(run);
+        }
+        if (chance(0.3)) {
+          list->baselineBox()->click();
+          return "baseline " + std::to_string(list->baselineBox()->isChecked());
+        }
+        QComboBox* box = list->backendBox(run);
+        choose(box, uniform(0, box->count() - 1));
+        return "run " + std::to_string(run) + " backend " + box->currentText().toStdString();
       }
       case 7:
         if (chance(0.5) && step_->isEnabled()) {
@@ -188,7 +216,7 @@ class GuiMonkey : public GuiTest {
     if (!runs().paused()) pause_->trigger();
     const auto index = static_cast<std::size_t>(uniform(0, int(mainRun().ballCount()) - 1));
     QTest::mouseClick(view(), Qt::LeftButton, {}, pixelOf(mainRun().positions()[index]));
-    if (!runs().selected()) return "edit: ball hidden under another";
+    if (!group().selected()) return "edit: ball hidden under another";
     if (chance(0.1)) {
       named<QPushButton>("inspectorDelete")->click();
       return "delete ball";
@@ -205,7 +233,7 @@ class GuiMonkey : public GuiTest {
   }
 
   bool closed() const {
-    const Walls walls = runs().world().walls;
+    const Walls walls = group().world().walls;
     return walls.left && walls.right && walls.bottom && walls.top;
   }
 
@@ -214,27 +242,27 @@ class GuiMonkey : public GuiTest {
   void checkInvariants() {
     for (int run = 0; run < runs().runCount(); ++run) {
       const Simulation& simulation = runs().run(run);
-      ASSERT_EQ(simulation.ballCount(), runs().ballCount()) << "run " << run;
+      ASSERT_EQ(simulation.ballCount(), group().ballCount()) << "run " << run;
       // A centre may lie beyond a wall by the backend's documented slack: none for the
       // double-precision methods, Box2D's continuous-collision tolerance for box2d
       // (tests/robustness/case_run.cpp derives it).
       const double slack =
-          robustness::tolerancesFor(runs().backendName(run).toStdString()).wallSlack;
+          robustness::tolerancesFor(group().spec(std::size_t(run)).backend).wallSlack;
       const Box box = simulation.box();
       for (std::size_t i = 0; i < simulation.ballCount(); ++i) {
         const Vec2 p = simulation.positions()[i];
         const Vec2 v = simulation.velocities()[i];
         ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(v.x) &&
                     std::isfinite(v.y))
-            << runs().backendName(run).toStdString() << " ball " << i;
+            << group().spec(std::size_t(run)).backend << " ball " << i;
         if (!closed() || ballsMayBeOutside_) continue;
         ASSERT_TRUE(p.x >= -slack && p.x <= box.width + slack && p.y >= -slack &&
                     p.y <= box.height + slack)
-            << runs().backendName(run).toStdString() << " ball " << i << " at (" << p.x << ", "
+            << group().spec(std::size_t(run)).backend << " ball " << i << " at (" << p.x << ", "
             << p.y << ") outside the " << box.width << " × " << box.height << " m box";
       }
     }
-    EXPECT_EQ(sidebar_->ballCountBox()->value(), static_cast<int>(runs().ballCount()));
+    EXPECT_EQ(sidebar_->ballCountBox()->value(), static_cast<int>(group().ballCount()));
 
     // Running again, the clock, the status bar and the charts move on, every step waited for.
     if (runs().stepping()) pause_->trigger();  // gives the step in flight up
@@ -242,17 +270,17 @@ class GuiMonkey : public GuiTest {
     runs().setStepPatience(RunController::kWaitForEveryStep);
     // Enough frames that step for a new chart sample (one every 3); at the slowest speed
     // (0.05×) a frame is a fraction of a step, so up to 300 frames.
-    const double before = runs().time();
+    const double before = group().time();
     int steppingFrames = 0;
     for (int frame = 0; frame < 300 && steppingFrames < 4; ++frame) {
-      const double frameStart = runs().time();
+      const double frameStart = group().time();
       frames(1);
-      if (runs().time() > frameStart) ++steppingFrames;
+      if (group().time() > frameStart) ++steppingFrames;
     }
-    ASSERT_GT(runs().time(), before);
+    ASSERT_GT(group().time(), before);
     window->updateStatusBar();
-    const QString ballsText = QObject::tr("%L1 balls").arg(runs().ballCount());
-    const QString timeText = QObject::tr("t = %1 s").arg(runs().time(), 0, 'f', 2);
+    const QString ballsText = QObject::tr("%L1 balls").arg(group().ballCount());
+    const QString timeText = QObject::tr("t = %1 s").arg(group().time(), 0, 'f', 2);
     bool ballsShown = false;
     bool timeShown = false;
     for (const QLabel* label : window->statusBar()->findChildren<QLabel*>()) {

@@ -23,17 +23,17 @@ TEST_F(MainWindowTest, SettingsAreRememberedBetweenRunsOutsideTheUsersConfig) {
   QSettings().clear();
   StartupOptions options;
   options.scene = stillBalls();
-  options.backend = QStringLiteral("elastic");
+  options.runs = {RunSpec{"elastic", {}}};
   {
     MainWindow first(options);
     first.show();
     first.view()->setTemperatureColouring(true);
-    first.runs().setMouseMode(MouseMode::Slingshot);
+    first.runs().changeTools([](RunGroup& group) { group.setMouseMode(MouseMode::Slingshot); });
     first.close();
   }
   MainWindow second(options);
   EXPECT_TRUE(second.view()->temperatureColouring());
-  EXPECT_EQ(second.runs().interactions().mode, MouseMode::Slingshot);
+  EXPECT_EQ(second.runs().group().interactions().mode, MouseMode::Slingshot);
   QSettings().clear();
 }
 

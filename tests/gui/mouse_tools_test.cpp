@@ -77,14 +77,14 @@ TEST_F(MouseTools, RightClickPlacesAPermanentAttractor) {
   open(oneBall());
   const Vec2 point{10.0, 4.5};
   QTest::mouseClick(view(), Qt::RightButton, {}, pixelOf(point));
-  ASSERT_EQ(runs().interactions().attractors().size(), 1u);
-  EXPECT_NEAR(runs().interactions().attractors()[0].x, point.x, 0.05);
+  ASSERT_EQ(group().interactions().attractors().size(), 1u);
+  EXPECT_NEAR(group().interactions().attractors()[0].x, point.x, 0.05);
   frames(20);
   EXPECT_GT(ball().x, 4.2) << "pulled towards the attractor with no button held";
 }
 
 TEST_F(MouseTools, ToolsActOnBothRunsInCompareMode) {
-  open(oneBall(), QStringLiteral("elastic"), QStringLiteral("box2d"));
+  open(oneBall(), "elastic", {"box2d"});
   chooseMode("attractRadio");
   QTest::mousePress(view(), Qt::LeftButton, {}, pixelOf({10.0, 4.5}));
   frames(20);

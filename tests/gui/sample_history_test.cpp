@@ -205,9 +205,9 @@ TEST(ChartData, CompareModeRunsKeepIndependentHistories) {
   data.reset({"elastic", "exact"});
   ASSERT_EQ(data.runCount(), 2);
   for (int i = 0; i < 30'000; ++i)
-    data.addSample(0, metricsAt(i * 0.01, 1.0, 0.0));
+    data.addSample(0, metricsAt(i * 0.01, 1.0, 0.0), {});
   for (int i = 0; i < 10; ++i)
-    data.addSample(1, metricsAt(5.0 + i * 0.5, 7.0, 0.0));
+    data.addSample(1, metricsAt(5.0 + i * 0.5, 7.0, 0.0), {});
 
   EXPECT_EQ(data.history(0).addedCount(), 30'000u);
   EXPECT_EQ(data.history(1).addedCount(), 10u);
@@ -219,7 +219,7 @@ TEST(ChartData, CompareModeRunsKeepIndependentHistories) {
   EXPECT_DOUBLE_EQ(data.endTime(), 299.99);
 
   // Run 1 starting over leaves run 0 alone.
-  data.addSample(1, metricsAt(0.0, 7.0, 0.0));
+  data.addSample(1, metricsAt(0.0, 7.0, 0.0), {});
   EXPECT_EQ(data.history(1).addedCount(), 1u);
   EXPECT_EQ(data.history(0).addedCount(), 30'000u);
 }
@@ -227,8 +227,8 @@ TEST(ChartData, CompareModeRunsKeepIndependentHistories) {
 TEST(ChartData, SampleHoldsTheChartedQuantities) {
   ChartData data;
   data.reset({"elastic"});
-  data.addSample(0, metricsAt(0.0, 6.0, 0.0));  // E₀ = 6 + 2 = 8 J
-  data.addSample(0, metricsAt(0.1, 5.0, -0.5));
+  data.addSample(0, metricsAt(0.0, 6.0, 0.0), {});  // E₀ = 6 + 2 = 8 J
+  data.addSample(0, metricsAt(0.1, 5.0, -0.5), {});
   const ChartSample& sample = data.history(0).latest();
   EXPECT_EQ(sample[Quantity::MomentumX], 3.0);
   EXPECT_EQ(sample[Quantity::MomentumY], -4.0);
@@ -243,21 +243,78 @@ TEST(ChartData, SampleHoldsTheChartedQuantities) {
 TEST(ChartData, RelativeResidualIsUndefinedForZeroInitialEnergy) {
   ChartData data;
   data.reset({"elastic"});
-  data.addSample(0, metricsAt(0.0, -2.0, 0.0));  // E₀ = −2 + 2 = 0 J
-  data.addSample(0, metricsAt(0.1, -2.0, 1e-9));
+  data.addSample(0, metricsAt(0.0, -2.0, 0.0), {});  // E₀ = −2 + 2 = 0 J
+  data.addSample(0, metricsAt(0.1, -2.0, 1e-9), {});
   EXPECT_TRUE(std::isnan(data.history(0).latest()[Quantity::RelativeEnergyResidual]));
 }
 
 TEST(ChartData, ResetForgetsSamplesAndMarkersAndIgnoresUnnamedRuns) {
   ChartData data;
   data.reset({"elastic", "exact"});
-  data.addSample(0, metricsAt(0.0, 1.0, 0.0));
+  data.addSample(0, metricsAt(0.0, 1.0, 0.0), {});
   data.addMarker(0.0, "grab");
   data.reset({"box2d"});
   EXPECT_FALSE(data.hasSamples());
   EXPECT_TRUE(data.markers().empty());
   EXPECT_EQ(data.runNames(), QStringList{"box2d"});
-  data.addSample(1, metricsAt(0.0, 1.0, 0.0));
+  data.addSample(1, metricsAt(0.0, 1.0, 0.0), {});
+  EXPECT_FALSE(data.hasSamples());
+}
+
+TEST(ChartData, AddingRemovingAndRenamingRunsKeepsTheOthersHistories) {
+  ChartData data;
+  data.reset({"elastic"});
+  for (int i = 0; i < 5; ++i)
+    data.addSample(0, metricsAt(i * 0.1, 1.0, 0.0), {});
+  data.addRun("exact");
+  data.addRun("box2d");
+  ASSERT_EQ(data.runCount(), 3);
+  EXPECT_EQ(data.history(0).addedCount(), 5u);
+  EXPECT_TRUE(data.history(1).empty());
+  data.addSample(1, metricsAt(0.5, 2.0, 0.0), {});
+  data.addSample(2, metricsAt(0.5, 3.0, 0.0), {});
+  data.addSample(2, metricsAt(0.6, 3.0, 0.0), {});
+
+  data.renameRun(2, "box2d:substeps=8");
+  EXPECT_EQ(data.runNames(), (QStringList{"elastic", "exact", "box2d:substeps=8"}));
+  EXPECT_EQ(data.history(2).addedCount(), 2u);
+
+  data.removeRun(1);
+  EXPECT_EQ(data.runNames(), (QStringList{"elastic", "box2d:substeps=8"}));
+  EXPECT_EQ(data.history(0).addedCount(), 5u);
+  EXPECT_EQ(data.history(1).addedCount(), 2u);
+  EXPECT_EQ(data.history(1).latest()[Quantity::KineticEnergy], 3.0);
+  // E₀ moved with its run: the relative residual is still against box2d's first energy (5 J).
+  data.addSample(1, metricsAt(0.7, 3.0, 1.0), {});
+  EXPECT_EQ(data.history(1).latest()[Quantity::RelativeEnergyResidual], 1.0 / 5.0);
+
+  for (int i = 0; i < 10; ++i)
+    data.addRun("xpbd");
+  EXPECT_EQ(data.runCount(), ChartData::kMaxRuns);
+  while (data.runCount() > 1)
+    data.removeRun(data.runCount() - 1);
+  data.removeRun(0);  // the last run stays
+  EXPECT_EQ(data.runCount(), 1);
+  EXPECT_EQ(data.history(0).addedCount(), 5u);
+}
+
+TEST(ChartData, BaselineSamplesAreKeptWhileItIsShown) {
+  ChartData data;
+  data.reset({"elastic", "exact"});
+  Divergence divergence;
+  divergence.rmsPositionDifference = 2e-9;
+  divergence.maxPositionDifference = 5e-9;
+  data.addSample(ChartData::kBaseline, metricsAt(0.0, 1.0, 0.0), divergence);  // not shown
+  EXPECT_TRUE(data.history(ChartData::kBaseline).empty());
+  data.setBaselineShown(true);
+  data.addSample(ChartData::kBaseline, metricsAt(4.0, 1.0, 0.0), divergence);
+  ASSERT_EQ(data.history(ChartData::kBaseline).addedCount(), 1u);
+  EXPECT_EQ(data.history(ChartData::kBaseline).latest()[Quantity::RmsPositionDifference], 2e-9);
+  EXPECT_EQ(data.history(ChartData::kBaseline).latest()[Quantity::MaxPositionDifference], 5e-9);
+  EXPECT_TRUE(data.hasSamples());
+  EXPECT_EQ(data.endTime(), 4.0);
+  data.setBaselineShown(false);
+  EXPECT_TRUE(data.history(ChartData::kBaseline).empty());
   EXPECT_FALSE(data.hasSamples());
 }
 

@@ -22,8 +22,8 @@ TEST_F(Sliders, GravitySliderSetsWorldGravityDownwards) {
   LogSlider* gravity = window->sidebar()->gravitySlider();
   const double chosen = move(gravity, gravity->positionOf(9.81));
   EXPECT_NEAR(chosen, 9.81, 0.2);
-  EXPECT_DOUBLE_EQ(runs().world().gravity.x, 0.0);
-  EXPECT_DOUBLE_EQ(runs().world().gravity.y, -chosen);
+  EXPECT_DOUBLE_EQ(group().world().gravity.x, 0.0);
+  EXPECT_DOUBLE_EQ(group().world().gravity.y, -chosen);
   frames(10);
   EXPECT_LT(mainRun().velocities()[0].y, 0.0) << "the balls fall";
 }
@@ -33,7 +33,7 @@ TEST_F(Sliders, GravitySliderLeftEndIsExactlyZero) {
   scene.world.gravity = {0.0, -9.81};
   open(scene);
   move(window->sidebar()->gravitySlider(), 0);
-  EXPECT_EQ(runs().world().gravity, (Vec2{0.0, 0.0}));
+  EXPECT_EQ(group().world().gravity, (Vec2{0.0, 0.0}));
 }
 
 TEST_F(Sliders, GravitySliderKeepsTheScenesDirection) {
@@ -42,12 +42,12 @@ TEST_F(Sliders, GravitySliderKeepsTheScenesDirection) {
   open(scene);
   LogSlider* gravity = window->sidebar()->gravitySlider();
   const double chosen = move(gravity, gravity->positionOf(10.0));
-  EXPECT_NEAR(runs().world().gravity.x, 0.6 * chosen, 1e-12);
-  EXPECT_NEAR(runs().world().gravity.y, 0.8 * chosen, 1e-12);
+  EXPECT_NEAR(group().world().gravity.x, 0.6 * chosen, 1e-12);
+  EXPECT_NEAR(group().world().gravity.y, 0.8 * chosen, 1e-12);
 }
 
 TEST_F(Sliders, AirResistanceSliderSetsDragInEveryRun) {
-  open(stillBalls(), QStringLiteral("elastic"), QStringLiteral("box2d"));
+  open(stillBalls(), "elastic", {"box2d"});
   LogSlider* drag = window->sidebar()->airResistanceSlider();
   const double chosen = move(drag, drag->positionOf(0.5));
   EXPECT_GT(chosen, 0.0);
@@ -60,9 +60,9 @@ TEST_F(Sliders, StrengthSliderSetsMouseStrength) {
   LogSlider* strength = window->sidebar()->strengthSlider();
   const double chosen = move(strength, LogSlider::kPositions);
   EXPECT_DOUBLE_EQ(chosen, 1000.0);
-  EXPECT_DOUBLE_EQ(runs().interactions().strength, 1000.0);
+  EXPECT_DOUBLE_EQ(group().interactions().strength, 1000.0);
   move(strength, 0);
-  EXPECT_DOUBLE_EQ(runs().interactions().strength, 0.0);
+  EXPECT_DOUBLE_EQ(group().interactions().strength, 0.0);
 }
 
 TEST_F(Sliders, SpeedSliderRightIsFaster) {
@@ -85,19 +85,19 @@ TEST_F(Sliders, ResetSlidersRestoresTheScenesValues) {
   move(window->sidebar()->airResistanceSlider(), LogSlider::kPositions);
   move(window->sidebar()->strengthSlider(), 0);
   emit window->sidebar()->resetSlidersRequested();
-  EXPECT_EQ(runs().world().gravity, scene.world.gravity);
-  EXPECT_EQ(runs().world().airResistance, 0.1);
-  EXPECT_EQ(runs().interactions().strength, 10.0);
+  EXPECT_EQ(group().world().gravity, scene.world.gravity);
+  EXPECT_EQ(group().world().airResistance, 0.1);
+  EXPECT_EQ(group().interactions().strength, 10.0);
   EXPECT_DOUBLE_EQ(window->sidebar()->gravitySlider()->value(), 9.81);
 }
 
 TEST_F(Sliders, CollisionAndWallBoxesSetTheWorld) {
   open(stillBalls());
   window->sidebar()->findChild<QCheckBox*>(QStringLiteral("ballCollisionsBox"))->click();
-  EXPECT_FALSE(runs().world().ballCollisions);
+  EXPECT_FALSE(group().world().ballCollisions);
   window->sidebar()->findChild<QCheckBox*>(QStringLiteral("wallsBox"))->click();
-  EXPECT_FALSE(runs().world().walls.left);
-  EXPECT_FALSE(runs().world().walls.top);
+  EXPECT_FALSE(group().world().walls.left);
+  EXPECT_FALSE(group().world().walls.top);
 }
 
 TEST_F(Sliders, ExtremeSettingsKeepEveryBall) {

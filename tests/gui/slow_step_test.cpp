@@ -13,6 +13,7 @@
 #include "fooball/random_balls.h"
 #include "gui_fixture.h"
 #include "registry.h"
+#include "run_list_editor.h"
 #include "settings_sidebar.h"
 #include "step_worker.h"
 
@@ -48,7 +49,8 @@ bool givenUpStepsEnd() {
 
 class SlowStep : public GuiTest {
  protected:
-  void open(const Scene& scene, const QString& backend, const QString& compare = QString()) {
+  void open(const Scene& scene, const std::string& backend,
+            const std::vector<std::string>& compare = {}) {
     GuiTest::open(scene, backend, compare);
     runs().setStepPatience(RunController::kDefaultStepPatience);  // the app's
   }
@@ -60,13 +62,13 @@ class SlowStep : public GuiTest {
 };
 
 TEST_F(SlowStep, RunsInTheBackgroundWhileTheWindowShowsTheStateBeforeIt) {
-  open(gasWithAFastBall(kVeryFast), QStringLiteral("box2d"));
+  open(gasWithAFastBall(kVeryFast), "box2d");
   const std::vector<Vec2> before = copyOf(mainRun().positions());
   frames(3);
   ASSERT_TRUE(runs().stepping()) << "the step must outlast the patience for this test to mean "
                                     "anything";
   EXPECT_EQ(copyOf(mainRun().positions()), before);
-  EXPECT_EQ(runs().time(), 0.0);
+  EXPECT_EQ(group().time(), 0.0);
   EXPECT_GT(runs().stepSeconds(), 0.0);
   window->updateStatusBar();
   bool stepShownRunning = false;
@@ -79,7 +81,7 @@ TEST_F(SlowStep, RunsInTheBackgroundWhileTheWindowShowsTheStateBeforeIt) {
 }
 
 TEST_F(SlowStep, PausingGivesItUpAndKeepsTheStateShown) {
-  open(gasWithAFastBall(kVeryFast), QStringLiteral("box2d"));
+  open(gasWithAFastBall(kVeryFast), "box2d");
   const std::vector<Vec2> before = copyOf(mainRun().positions());
   frames(1);
   ASSERT_TRUE(runs().stepping());
@@ -87,50 +89,53 @@ TEST_F(SlowStep, PausingGivesItUpAndKeepsTheStateShown) {
   EXPECT_TRUE(runs().paused());
   EXPECT_FALSE(runs().stepping());
   EXPECT_EQ(copyOf(mainRun().positions()), before);
-  EXPECT_EQ(runs().time(), 0.0);
-  EXPECT_EQ(runs().backendName(0), QStringLiteral("box2d"));
+  EXPECT_EQ(group().time(), 0.0);
+  EXPECT_EQ(runs().label(0), QStringLiteral("box2d"));
   EXPECT_TRUE(givenUpStepsEnd());
 
   // The run goes on from there, on a fresh Box2D world: slow the ball down and it steps at once.
-  BallDef fast = runs().ball(1);
+  BallDef fast = group().ball(1);
   fast.velocity = {-3.0, 0.0};
   runs().setBall(1, fast);
   runs().setStepPatience(
       RunController::kWaitForEveryStep);  // a step of the slowed scene, however loaded
   runs().stepOnce();
   EXPECT_FALSE(runs().stepping());
-  EXPECT_EQ(runs().time(), kFrame);
+  EXPECT_EQ(group().time(), kFrame);
 }
 
 TEST_F(SlowStep, SwitchingBackendGivesItUpAndContinuesFromTheStateShown) {
-  open(gasWithAFastBall(kVeryFast), QStringLiteral("box2d"));
+  open(gasWithAFastBall(kVeryFast), "box2d");
   const std::vector<Vec2> before = copyOf(mainRun().positions());
   frames(1);
   ASSERT_TRUE(runs().stepping());
-  QComboBox* backends = window->sidebar()->backendBox();
+  QComboBox* backends = window->sidebar()->runList()->backendBox(0);
   backends->setCurrentIndex(backends->findText(QStringLiteral("elastic")));
   emit backends->activated(backends->currentIndex());
-  EXPECT_EQ(runs().backendName(0), QStringLiteral("elastic"));
+  EXPECT_EQ(runs().label(0), QStringLiteral("elastic"));
   EXPECT_FALSE(runs().stepping());
   EXPECT_EQ(copyOf(mainRun().positions()), before);
   EXPECT_TRUE(givenUpStepsEnd());
   runs().setStepPatience(
       RunController::kWaitForEveryStep);  // elastic steps on from there, however loaded
   frames(1);
-  EXPECT_EQ(runs().time(), kFrame);
+  EXPECT_EQ(group().time(), kFrame);
 }
 
 TEST_F(SlowStep, InCompareModeBothRunsWaitForTheSlowOneAndAreGivenUpTogether) {
-  open(gasWithAFastBall(kVeryFast), QStringLiteral("box2d"), QStringLiteral("elastic"));
+  open(gasWithAFastBall(kVeryFast), "box2d", {"elastic"});
+  // Box2D holds the start in float, elastic in double: each run's own start state.
+  const std::vector<Vec2> start0 = copyOf(runs().run(0).positions());
+  const std::vector<Vec2> start1 = copyOf(runs().run(1).positions());
   frames(2);
   ASSERT_TRUE(runs().stepping());
-  EXPECT_EQ(runs().run(RunController::kCompareRun).time(), 0.0) << "lockstep: elastic waits";
+  EXPECT_EQ(runs().run(1).time(), 0.0) << "lockstep: elastic waits";
   pause();
   EXPECT_FALSE(runs().stepping());
-  EXPECT_EQ(runs().run(RunController::kMainRun).time(), 0.0);
-  EXPECT_EQ(runs().run(RunController::kCompareRun).time(), 0.0);
-  EXPECT_EQ(copyOf(runs().run(RunController::kMainRun).positions()),
-            copyOf(runs().run(RunController::kCompareRun).positions()));
+  EXPECT_EQ(runs().run(0).time(), 0.0);
+  EXPECT_EQ(runs().run(1).time(), 0.0);
+  EXPECT_EQ(copyOf(runs().run(0).positions()), start0);
+  EXPECT_EQ(copyOf(runs().run(1).positions()), start1);
   EXPECT_TRUE(givenUpStepsEnd());
 }
 
@@ -141,7 +146,7 @@ TEST_F(SlowStep, AStepThatFinishesInTheBackgroundLandsAsIfItHadBeenWaitedFor) {
   Simulation reference(scene, createBackend("box2d"));
   reference.step();
 
-  open(scene, QStringLiteral("box2d"));
+  open(scene, "box2d");
   runs().setStepPatience(std::chrono::milliseconds(0));  // whatever this machine's speed
   frames(1);
   ASSERT_TRUE(runs().stepping());

@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "backend_profiles.h"
 #include "fooball/scene_error.h"
 #include "fooball/simulation.h"
 
@@ -127,58 +128,11 @@ void apply(const RandomCase& c, int step, Simulation& simulation) {
 }  // namespace
 
 Tolerances tolerancesFor(std::string_view backend) {
-  if (backend == "box2d") {
-    // Box2D's contacts rest at a penetration of b2_linearSlop (5 mm, b2_common.h), and its
-    // continuous collision against the walls stops a fast ball where it overlaps the wall by up
-    // to 3.25 slops (b2TimeOfImpact: target separation r − 3·slop, tolerance slop/4): 16.25 mm.
-    // A ball smaller than that may end with its centre beyond the wall by the difference. Where
-    // the continuous collision gives up (in crowds of bullets), the adapter puts the ball back
-    // (backends/box2d/wall_containment.h, the same 3.25 slops).
-    // FINDING (reported to the coordinator; pinned by
-    // RandomInvariantsKnownFinding.Box2dGainsEnergyUnderGravity): under gravity Box2D's energy
-    // can grow far beyond its float and solver error (13 of the default 2'000 cases by ×1.08 to
-    // ×2.1; ×2.4e6 in a longer run), so its energy is checked only in cases without gravity, to
-    // 5% (the sequential-impulse solver resolves each contact only to within its iterations).
-    return {0.05, 1e-4, 3.25 * 0.005, false};
-  }
-  if (backend == "elastic") {
-    // FINDING (reported to the coordinator; pinned by
-    // RandomInvariantsKnownFinding.ElasticGainsEnergyUnderGravityWithCollisions): with ball
-    // collisions on, under gravity the elastic solver can gain energy (7 of seeds 2'001–20'000,
-    // none of the default 2'000; the most 6.0e-4 in seed 2324: 83 balls, g = 0.64 m/s², one
-    // substep of 40 ms; earlier 1.8% in a longer run of 22 balls at g = 825 m/s²). A ball that a
-    // neighbour pushes into a wall is put back at contact, which lifts it against gravity; the lift
-    // is paid from its inward speed, but a ball resting in a pile has too little. Free flight and
-    // wall bounces alone keep the energy to rounding, so cases with ball collisions off are checked
-    // under gravity too.
-    return {1e-9, 1e-12, 0.0, true, false};
-  }
-  // Double-precision methods: the elastic solver's impulses and exact wall reflection and
-  // the exact solver's event times conserve energy to rounding: ~1e-16 per operation, a few
-  // thousand operations per ball in a case.
-  return {1e-9, 1e-12, 0.0, true};
+  return testing::profileFor(backend).robustness;
 }
 
 WorkCap workCapFor(std::string_view backend) {
-  if (backend == "box2d") {
-    // Box2D steps × (balls + 1). Under gravity Box2D's energy can grow without bound (the finding
-    // in tolerancesFor), and auto_substeps then raises its steps towards 1000 a step: such a
-    // case took 2 minutes (15 balls, 371 steps, 200'000 Box2D steps). 200'000 is 1000 Box2D
-    // steps of 200 balls, ~0.1 s for an ordinary case, but continuous collision of fast bullets
-    // in piles costs up to 40 µs a ball and Box2D step: 8 of the default 2'000 cases reach it.
-    return {"box2d_steps", true, 200'000.0};
-  }
-  if (backend == "exact") {
-    // Events. Piles under strong gravity make event cascades that fill the event cap of every
-    // step (cut_short_steps), and a ball resting on a wall next to a flying one takes an
-    // iterative contact search (~30 µs an event): such cases took up to 9 s. 30'000 events are
-    // 150 per ball for 200 balls, ~10 ms in a gas and under 1 s at worst; 42 of the default
-    // 2'000 cases reach it, most of them cascades, each after dozens of cut-short steps.
-    return {"events", false, 30'000.0};
-  }
-  // elastic: its cost is fixed by the case (balls, steps, substeps, threads), which drawCase
-  // bounds.
-  return {};
+  return testing::profileFor(backend).workCap;
 }
 
 std::string runCase(const RandomCase& c, const BackendInfo& info, const Tolerances& tolerances,

@@ -2,9 +2,10 @@
 // ends bit for bit the same, and a 64-bit hash of its final state equals a constant.
 //
 // A changed hash means the trajectory changed. That must be an intended change (a new
-// integrator, a different collision order, a changed default option): update the constant in
-// the same commit and say why. An unintended change — a refactoring that reorders floating-point
-// operations, an uninitialised value — shows up here first.
+// integrator, a different collision order, a changed default option): update the constant (the
+// backend's row in tests/backend_profiles.cpp) in the same commit and say why. An unintended
+// change — a refactoring that reorders floating-point operations, an uninitialised value — shows
+// up here first.
 //
 // The hash is of the exact bits, so it also depends on the compiler and its flags. GCC on x86-64
 // uses SSE2 doubles and contracts a*b+c into an FMA only when -march allows FMA instructions
@@ -16,9 +17,8 @@
 
 #include <bit>
 #include <cstdint>
-#include <map>
-#include <string>
 
+#include "backend_profiles.h"
 #include "backend_state.h"
 #include "backend_test_name.h"
 #include "registry.h"
@@ -69,13 +69,6 @@ State finalState(const BackendInfo& info) {
   return readState(*backend);
 }
 
-/// The pinned hashes, with default options.
-const std::map<std::string, std::uint64_t, std::less<>> kPinnedHashes = {
-    {"elastic", 3115361618156865503u},
-    {"box2d", 13898907332539593637u},
-    {"exact", 256026291394485770u},
-};
-
 class Determinism : public ::testing::TestWithParam<BackendInfo> {};
 
 TEST_P(Determinism, SameSceneTwiceGivesTheSameBits) {
@@ -89,11 +82,12 @@ TEST_P(Determinism, SameSceneTwiceGivesTheSameBits) {
 }
 
 TEST_P(Determinism, FinalStateHashIsPinned) {
-  const auto pinned = kPinnedHashes.find(GetParam().name);
+  const std::uint64_t pinned = testing::profileFor(GetParam().name).determinismHash;
   const std::uint64_t hash = stateHash(finalState(GetParam()));
-  ASSERT_NE(pinned, kPinnedHashes.end())
-      << "no pinned hash for backend " << GetParam().name << "; its hash is " << hash;
-  EXPECT_EQ(hash, pinned->second) << "the trajectory changed: if intended, pin the new hash";
+  ASSERT_NE(pinned, 0u) << "no pinned hash for backend " << GetParam().name
+                        << " in tests/backend_profiles.cpp; its hash is " << hash;
+  EXPECT_EQ(hash, pinned) << "the trajectory changed: if intended, pin the new hash in "
+                          << "tests/backend_profiles.cpp";
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, Determinism, ::testing::ValuesIn(registeredBackends()),

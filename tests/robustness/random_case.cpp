@@ -137,7 +137,8 @@ std::vector<std::pair<std::string, double>> drawOptions(Draw& draw,
 }
 
 /// The longest run: 400 steps, fewer when a step is dear. A case costs about (balls + c) ×
-/// steps × the options that repeat a step's work: substeps, and elastic's threads. Each worker
+/// steps × the options that repeat a step's work: substeps and worker threads (the options of
+/// roles OptionRole::Substeps and OptionRole::Threads). Each worker
 /// thread beyond the first adds a barrier wait to every phase of a substep: ~15 µs on an idle
 /// two-core machine, but up to a scheduler time slice when another process holds the other
 /// core (as under ctest -j2, where the elastic suite took 50 s instead of 5 s), so each counts as
@@ -147,15 +148,18 @@ std::vector<std::pair<std::string, double>> drawOptions(Draw& draw,
 /// default 2'000 fit the suite's budget (random_invariants_test.cpp), while long runs (few balls
 /// and substeps) and large ones (shorter) stay in the draw: of the default cases 12% have 100
 /// balls or more and 4–9% (by backend) 200 steps or more. Box2D's and the exact solver's cost
-/// also grows with what happens in the run; workCapFor (case_run.cpp) bounds that.
-int maxSteps(const RandomCase& c) {
+/// also grows with what happens in the run; their work caps (tests/backend_profiles.cpp) bound
+/// that.
+/// `specs` are the options c.options holds the values of, in the same order.
+int maxSteps(const RandomCase& c, std::span<const OptionSpec> specs) {
   constexpr double kBallSteps = 20'000.0;
   constexpr double kSubstepSteps = 1'600.0;
   constexpr double kThreadRepeats = 16.0;
   double repeats = 1.0;
-  for (const auto& [name, value] : c.options) {
-    if (name == "substeps") repeats *= value;
-    if (name == "threads") repeats *= 1.0 + kThreadRepeats * (value - 1.0);
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const double value = c.options[i].second;
+    if (specs[i].role == OptionRole::Substeps) repeats *= value;
+    if (specs[i].role == OptionRole::Threads) repeats *= 1.0 + kThreadRepeats * (value - 1.0);
   }
   const double balls = static_cast<double>(std::max<std::size_t>(c.scene.balls.size(), 1));
   return static_cast<int>(
@@ -238,7 +242,7 @@ RandomCase drawCase(std::uint64_t seed, std::span<const OptionSpec> options) {
   drawBalls(c.scene, draw);
   c.options = drawOptions(draw, options);
   c.dt = draw.logUniform(1e-4, 0.05);
-  c.steps = draw.logInteger(1, maxSteps(c));
+  c.steps = draw.logInteger(1, maxSteps(c, options));
   if (draw.chance(0.5)) drawEvents(c, draw);
   return c;
 }

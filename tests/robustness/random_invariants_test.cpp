@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <string>
 
+#include "backend_profiles.h"
 #include "backend_test_name.h"
 #include "case_run.h"
 #include "fooball/scene_file.h"
@@ -59,35 +59,37 @@ TEST_P(RandomInvariants, HoldOnRandomScenesSettingsToolsAndEdits) {
   }
 }
 
-/// Runs case `seed` on `backend` with the energy checked under gravity too, and expects the
-/// energy to grow: a known finding. When this fails the backend keeps energy under gravity:
-/// remove the test and the exception in tolerancesFor.
-void expectEnergyGrowsUnderGravity(std::string_view backend, std::uint64_t seed) {
-  const BackendInfo& info = *std::find_if(registeredBackends().begin(), registeredBackends().end(),
-                                          [&](const BackendInfo& b) { return b.name == backend; });
-  const RandomCase c = drawCase(seed, info.create()->options().specs());
+/// A backend that the profile exempts from the energy check under gravity (robustness tolerances
+/// in tests/backend_profiles.cpp) pins a case showing why: run with the energy checked under
+/// gravity too, its energy grows. When this fails the backend keeps energy under gravity: remove
+/// the exemption and the seed from its row.
+class RandomInvariantsKnownFinding : public ::testing::TestWithParam<BackendInfo> {};
+
+TEST_P(RandomInvariantsKnownFinding, EnergyGrowsWhereTheProfileExemptsIt) {
+  const BackendInfo& info = GetParam();
+  const testing::BackendProfile& profile = testing::profileFor(info.name);
+  const Tolerances& tolerances = profile.robustness;
+  const bool exempt =
+      !tolerances.energyKeptUnderGravity || !tolerances.energyKeptUnderGravityWithCollisions;
+  if (!exempt) {
+    EXPECT_EQ(profile.energyGainSeed, 0u)
+        << info.name << ": a finding seed without an exemption in tests/backend_profiles.cpp";
+    return;
+  }
+  ASSERT_NE(profile.energyGainSeed, 0u)
+      << info.name << " is exempt from the energy check under gravity but pins no case "
+      << "(energyGainSeed in tests/backend_profiles.cpp)";
+  const RandomCase c = drawCase(profile.energyGainSeed, info.create()->options().specs());
   ASSERT_TRUE(c.isolated() && c.closed());
   ASSERT_NE(c.scene.world.gravity, Vec2{});
-  Tolerances strict = tolerancesFor(backend);
+  Tolerances strict = tolerances;
   strict.energyKeptUnderGravity = true;
   strict.energyKeptUnderGravityWithCollisions = true;
-  EXPECT_NE(runCase(c, info, strict, workCapFor(backend)).find("energy grew"), std::string::npos);
+  EXPECT_NE(runCase(c, info, strict, profile.workCap).find("energy grew"), std::string::npos);
 }
 
-TEST(RandomInvariantsKnownFinding, Box2dGainsEnergyUnderGravity) {
-  // 22 balls in a closed 1.9 × 0.94 m box under g = 64 m/s², ball collisions off, 125 steps of
-  // 22 ms, 4 substeps: the wall contacts alone raise the energy by 89% (13 ms). 13 of the
-  // default 2'000 cases gain more than 5% (up to ×2.1, case 1764).
-  expectEnergyGrowsUnderGravity("box2d", 417);
-}
-
-TEST(RandomInvariantsKnownFinding, ElasticGainsEnergyUnderGravityWithCollisions) {
-  // 83 balls in a closed 0.56 × 0.47 m box under g = 0.64 m/s², 86 steps of 40 ms, one substep:
-  // balls pushed into the walls by their neighbours are lifted back to contact, and the energy
-  // grows by 6.0e-4 (2 ms). None of the default 2'000 cases gains more than the 1e-9 allowed, 7
-  // of the next 18'000 do.
-  expectEnergyGrowsUnderGravity("elastic", 2324);
-}
+INSTANTIATE_TEST_SUITE_P(EveryBackend, RandomInvariantsKnownFinding,
+                         ::testing::ValuesIn(registeredBackends()), backendTestName);
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, RandomInvariants, ::testing::ValuesIn(registeredBackends()),
                          backendTestName);

@@ -53,6 +53,40 @@ AxisScale followValues(const ValueRange& data, const std::optional<AxisScale>& c
   return roundedOut(low, high, ticks);
 }
 
+double LogAxisScale::min() const {
+  return std::pow(10.0, lowExponent);
+}
+
+double LogAxisScale::max() const {
+  return std::pow(10.0, highExponent);
+}
+
+LogAxisScale followLogValues(const ValueRange& data, const std::optional<LogAxisScale>& current,
+                             int ticks) {
+  if (data.empty() || !(data.low > 0.0)) return current.value_or(LogAxisScale{});
+  // The decade exponents of doubles are within ±324, so these ints do not overflow.
+  int low = static_cast<int>(std::floor(std::log10(data.low)));
+  int high = static_cast<int>(std::ceil(std::log10(data.high)));
+  if (high <= low) high = low + 1;
+  const int decadesPerTick =
+      std::max(1, (high - low + std::max(ticks, 1) - 1) / std::max(ticks, 1));
+  // Both ends on a labelled decade: round outwards to multiples of decadesPerTick.
+  const auto floorToMultiple = [decadesPerTick](int exponent) {
+    const int remainder = ((exponent % decadesPerTick) + decadesPerTick) % decadesPerTick;
+    return exponent - remainder;
+  };
+  low = floorToMultiple(low);
+  high = -floorToMultiple(-high);
+  const LogAxisScale fresh{low, high, decadesPerTick};
+  if (current) {
+    const bool fits = data.low >= current->min() && data.high <= current->max();
+    const int extraDecades =
+        (current->highExponent - current->lowExponent) - (fresh.highExponent - fresh.lowExponent);
+    if (fits && extraDecades <= 3) return *current;
+  }
+  return fresh;
+}
+
 AxisScale growingTimeScale(double start, double end) {
   // 1 s at least: a run's first second grows into the axis instead of rescaling it each frame.
   const double span = std::max(end - start, 1.0);

@@ -39,6 +39,25 @@ double niceStep(double roughStep);
 /// magnitude is widened, so rounding noise in a conserved quantity draws as a flat line.
 AxisScale followValues(const ValueRange& data, const std::optional<AxisScale>& current, int ticks);
 
+/// A base-10 log axis from 10^lowExponent to 10^highExponent, labelled every `decadesPerTick`
+/// decades (both ends are labelled: they are multiples of it).
+struct LogAxisScale {
+  int lowExponent = -12;
+  int highExponent = 0;
+  int decadesPerTick = 3;
+
+  double min() const;
+  double max() const;
+};
+
+/// A log value axis holding `data` (positive values: a log axis has no room for the rest) from
+/// the power of ten at or below its lowest value to the one at or above its highest, at least a
+/// decade, labelled every 1, 2, 3, … decades so that there are at most `ticks` intervals. Keeps
+/// `current` while the data fits in it and it is at most three decades wider than needed, so a
+/// divergence wandering within a decade does not rescale the axis on every redraw.
+LogAxisScale followLogValues(const ValueRange& data, const std::optional<LogAxisScale>& current,
+                             int ticks);
+
 /// A time axis (s) from `start` that reaches at least `end` in whole ticks: as a run grows,
 /// the axis grows in steps instead of rescaling on every refresh.
 AxisScale growingTimeScale(double start, double end);

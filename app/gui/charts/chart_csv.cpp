@@ -2,27 +2,31 @@
 
 #include <QSaveFile>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <vector>
+
+#include "fooball/number_text.h"
 
 namespace fooball::gui {
 namespace {
 
 /// The CSV columns after `run` and `time`, in header order.
 constexpr std::array kColumns{
-    Quantity::KineticEnergy,  Quantity::PotentialEnergy,
-    Quantity::TotalEnergy,    Quantity::MomentumX,
-    Quantity::MomentumY,      Quantity::MomentumMagnitude,
-    Quantity::EnergyResidual, Quantity::RelativeEnergyResidual,
+    Quantity::KineticEnergy,
+    Quantity::PotentialEnergy,
+    Quantity::TotalEnergy,
+    Quantity::MomentumX,
+    Quantity::MomentumY,
+    Quantity::MomentumMagnitude,
+    Quantity::EnergyResidual,
+    Quantity::RelativeEnergyResidual,
+    Quantity::RmsPositionDifference,
+    Quantity::MaxPositionDifference,
 };
 
 void appendNumber(QByteArray& row, double value) {
   if (!std::isfinite(value)) return;
-  // 32 characters hold the longest shortest form of a double ("-2.2250738585072014e-308").
-  std::array<char, 32> text{};
-  const auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  row.append(text.data(), result.ptr - text.data());
+  row.append(exactNumberText(value));
 }
 
 /// A CSV field: quoted, with quotes doubled, when it holds a comma, quote or line break.
@@ -45,9 +49,8 @@ bool writeChartCsv(const QString& path, const ChartData& data) {
 
   std::vector<ChartSample> samples;
   QByteArray row;
-  for (int run = 0; run < data.runCount(); ++run) {
-    const QByteArray runField = csvField(data.runNames()[run]);
-    data.history(run).copySince(-HUGE_VAL, samples);
+  const auto writeRun = [&](const QByteArray& runField, const SampleHistory& history) {
+    history.copySince(-HUGE_VAL, samples);
     for (const ChartSample& sample : samples) {
       row = runField;
       row.append(',');
@@ -59,7 +62,10 @@ bool writeChartCsv(const QString& path, const ChartData& data) {
       row.append('\n');
       file.write(row);
     }
-  }
+  };
+  for (int run = 0; run < data.runCount(); ++run)
+    writeRun(csvField(data.runName(run)), data.history(run));
+  if (data.baselineShown()) writeRun(kBaselineCsvRun, data.history(ChartData::kBaseline));
   return file.commit();
 }
 

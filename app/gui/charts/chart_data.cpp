@@ -4,23 +4,58 @@
 
 namespace fooball::gui {
 
+ChartData::ChartData() {
+  runs_.reserve(kMaxRuns);
+  baseline_.name = QStringLiteral("baseline");
+  reset({});
+}
+
 void ChartData::reset(const QStringList& runNames) {
-  runNames_ = runNames.mid(0, kMaxRuns);
-  if (runNames_.isEmpty()) runNames_.append(QString());
-  for (Run& run : runs_)
-    run.history.clear();
+  runs_.clear();
+  for (const QString& name : runNames.mid(0, kMaxRuns))
+    runs_.push_back({name, SampleHistory(), 0.0});
+  if (runs_.empty()) runs_.push_back({QString(), SampleHistory(), 0.0});
+  baseline_.history.clear();
   markers_.clear();
 }
 
-void ChartData::addSample(int runIndex, const Metrics& metrics) {
+void ChartData::addRun(const QString& name) {
+  if (runCount() >= kMaxRuns) return;
+  runs_.push_back({name, SampleHistory(), 0.0});
+}
+
+void ChartData::removeRun(int runIndex) {
+  if (runIndex < 0 || runIndex >= runCount() || runCount() == 1) return;
+  runs_.erase(runs_.begin() + runIndex);
+}
+
+void ChartData::renameRun(int runIndex, const QString& name) {
   if (runIndex < 0 || runIndex >= runCount()) return;
-  Run& run = runs_[runIndex];
+  runs_[runIndex].name = name;
+}
+
+void ChartData::setBaselineShown(bool shown) {
+  if (!shown) baseline_.history.clear();
+  baselineShown_ = shown;
+}
+
+QStringList ChartData::runNames() const {
+  QStringList names;
+  for (const Run& run : runs_)
+    names.append(run.name);
+  return names;
+}
+
+void ChartData::addSample(int runIndex, const Metrics& metrics, const Divergence& fromRunZero) {
+  const bool isRun = runIndex >= 0 && runIndex < runCount();
+  if (!isRun && !(runIndex == kBaseline && baselineShown_)) return;
+  Run& target = run(runIndex);
   // The history starts over on an empty history or a time going back (see SampleHistory::add);
   // E₀ starts over with it.
-  if (run.history.empty() || metrics.time < run.history.latest().time) {
-    run.initialTotalEnergy = metrics.sums.totalEnergy();
+  if (target.history.empty() || metrics.time < target.history.latest().time) {
+    target.initialTotalEnergy = metrics.sums.totalEnergy();
   }
-  run.history.add(chartSampleFrom(metrics, run.initialTotalEnergy));
+  target.history.add(chartSampleFrom(metrics, fromRunZero, target.initialTotalEnergy));
 }
 
 void ChartData::addMarker(double time, const QString& label) {
@@ -28,30 +63,38 @@ void ChartData::addMarker(double time, const QString& label) {
   if (markers_.size() > kMaxMarkers) markers_.pop_front();
 }
 
+template <class Action>
+void ChartData::forEachHistory(Action&& action) const {
+  for (const Run& run : runs_)
+    action(run.history);
+  if (baselineShown_) action(baseline_.history);
+}
+
 bool ChartData::hasSamples() const {
-  return std::any_of(runs_.begin(), runs_.begin() + runCount(),
-                     [](const Run& run) { return !run.history.empty(); });
+  bool found = false;
+  forEachHistory([&found](const SampleHistory& history) { found = found || !history.empty(); });
+  return found;
 }
 
 double ChartData::startTime() const {
   bool found = false;
   double start = 0.0;
-  for (int i = 0; i < runCount(); ++i) {
-    if (runs_[i].history.empty()) continue;
-    start = found ? std::min(start, runs_[i].history.first().time) : runs_[i].history.first().time;
+  forEachHistory([&](const SampleHistory& history) {
+    if (history.empty()) return;
+    start = found ? std::min(start, history.first().time) : history.first().time;
     found = true;
-  }
+  });
   return start;
 }
 
 double ChartData::endTime() const {
   bool found = false;
   double end = 0.0;
-  for (int i = 0; i < runCount(); ++i) {
-    if (runs_[i].history.empty()) continue;
-    end = found ? std::max(end, runs_[i].history.latest().time) : runs_[i].history.latest().time;
+  forEachHistory([&](const SampleHistory& history) {
+    if (history.empty()) return;
+    end = found ? std::max(end, history.latest().time) : history.latest().time;
     found = true;
-  }
+  });
   return end;
 }
 

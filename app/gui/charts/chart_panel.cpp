@@ -5,9 +5,11 @@
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QImage>
+#include <QLabel>
 #include <QPalette>
 #include <QSignalBlocker>
 #include <QSplitter>
+#include <QTextDocument>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "chart_csv.h"
 #include "chart_style.h"
@@ -45,8 +48,15 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   charts_[kResidualChart] =
       new TimeChart(tr("Energy budget residual: the method's own error"),
                     {Quantity::EnergyResidual, Quantity::RelativeEnergyResidual}, markers);
+  // Divergence grows from rounding (1e-15 m) or the baseline's 1e-9 m to the box's size: only a
+  // log axis shows every run's growth at once, and where one leaves the baseline's.
+  charts_[kDivergenceChart] = new TimeChart(tr("Divergence from run 0: RMS position difference"),
+                                            {Quantity::RmsPositionDifference}, markers,
+                                            TimeChart::ValueAxisKind::Logarithmic);
+  charts_[kDivergenceChart]->setValueAxisTitle(tr("RMS Δposition (m)"));
 
   auto* splitter = new QSplitter(Qt::Vertical, this);
+  splitter_ = splitter;
   splitter->setChildrenCollapsible(false);
   splitter->setHandleWidth(3);
   // The handles show the splitter's background: the charts' own, whatever the window's palette.
@@ -58,13 +68,35 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
     splitter->addWidget(chart);
     connect(chart->chart(), &QChart::plotAreaChanged, this, &ChartPanel::alignPlotAreas);
   }
-  chartArea_ = splitter;
+
+  // The run legend: one entry per run in its colour, wrapping onto more lines when the panel is
+  // narrow. A chart's own legend is one row that Qt elides to "…" when eight runs do not fit.
+  runLegend_ = new QLabel;
+  runLegend_->setObjectName(QStringLiteral("runLegend"));
+  runLegend_->setTextFormat(Qt::RichText);
+  runLegend_->setWordWrap(true);
+  runLegend_->setContentsMargins(8, 3, 8, 3);
+  runLegend_->setToolTip(
+      tr("Each run's colour. Run 0 is the reference: the divergence chart shows how far every "
+         "other run's balls are from run 0's"));
+  QPalette legendPalette = runLegend_->palette();
+  legendPalette.setColor(QPalette::WindowText, chart_colours::kLabel);
+  runLegend_->setPalette(legendPalette);
+
+  chartArea_ = new QWidget(this);
+  chartArea_->setPalette(chartPalette);
+  chartArea_->setAutoFillBackground(true);
+  auto* chartLayout = new QVBoxLayout(chartArea_);
+  chartLayout->setContentsMargins(0, 0, 0, 0);
+  chartLayout->setSpacing(0);
+  chartLayout->addWidget(runLegend_);
+  chartLayout->addWidget(splitter, 1);
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   layout->addWidget(createToolBar());
-  layout->addWidget(splitter, 1);
+  layout->addWidget(chartArea_, 1);
 
   refreshTimer_ = new QTimer(this);
   refreshTimer_->setInterval(kRefreshIntervalMs);
@@ -130,7 +162,17 @@ QToolBar* ChartPanel::createToolBar() {
       toolBar, tr("÷|E₀|"),
       tr("Show the residual relative to |E₀|, the run's total energy at its first sample"),
       QStringLiteral("relativeResidualToggle"));
-  relativeResidualToggle_->setChecked(false);
+  {
+    const QSignalBlocker blocker(relativeResidualToggle_);  // the toggles are not all there yet
+    relativeResidualToggle_->setChecked(false);
+  }
+  toolBar->addSeparator();
+  divergenceToggle_ = addQuantityToggle(
+      toolBar, tr("divergence"),
+      tr("RMS position difference of every run from run 0, over balls of the same index (m, log "
+         "scale), and the chaos baseline's (grey, dashed). Shown with two runs or more, or with "
+         "the baseline"),
+      QStringLiteral("divergenceToggle"));
   return toolBar;
 }
 
@@ -145,15 +187,79 @@ QAction* ChartPanel::addQuantityToggle(QToolBar* toolBar, const QString& text,
   return toggle;
 }
 
-void ChartPanel::reset(const QStringList& runs) {
-  data_.reset(runs);
-  for (TimeChart* chart : charts_)
-    chart->setRuns(data_.runNames());
+void ChartPanel::reset(const QStringList& runLabels) {
+  data_.reset(runLabels);
+  rebuildCurves();
+}
+
+void ChartPanel::addRun(const QString& label) {
+  if (data_.runCount() >= ChartData::kMaxRuns) return;
+  data_.addRun(label);
+  rebuildCurves();
+}
+
+void ChartPanel::removeRun(int runIndex) {
+  const int before = data_.runCount();
+  data_.removeRun(runIndex);
+  if (data_.runCount() != before) rebuildCurves();
+}
+
+void ChartPanel::renameRun(int runIndex, const QString& label) {
+  if (runIndex < 0 || runIndex >= data_.runCount() || data_.runName(runIndex) == label) return;
+  data_.renameRun(runIndex, label);
+  rebuildCurves();
+}
+
+void ChartPanel::setBaselineShown(bool shown) {
+  if (data_.baselineShown() == shown) return;
+  data_.setBaselineShown(shown);
+  rebuildCurves();
+}
+
+void ChartPanel::rebuildCurves() {
+  const int runCount = data_.runCount();
+  const bool comparing = runCount > 1;
+  std::vector<TimeChart::CurveOwner> runs;
+  std::vector<TimeChart::CurveOwner> divergent;  // run 0's divergence from itself is nothing
+  for (int run = 0; run < runCount; ++run) {
+    runs.push_back({run, data_.runName(run)});
+    if (run > 0) divergent.push_back({run, data_.runName(run)});
+  }
+  // The baseline is run 0's method from a start 1e-9 m away: until chaos has grown that to
+  // something visible its momentum, energy and residual lie on run 0's, and after that they
+  // say nothing about the method that run 0's do not. So it is drawn on the divergence chart
+  // only, where it is the yardstick, and never hides run 0's curves in the others.
+  if (data_.baselineShown()) divergent.push_back({ChartData::kBaseline, tr("chaos baseline")});
+  for (const Chart chart : {kMomentumChart, kEnergyChart, kResidualChart})
+    charts_[chart]->setOwners(runs, comparing);
+  charts_[kDivergenceChart]->setOwners(divergent, true);
+
+  QStringList entries;
+  if (comparing) {
+    for (int run = 0; run < runCount; ++run) {
+      const QString label =
+          data_.runName(run).isEmpty() ? tr("run %1").arg(run) : data_.runName(run).toHtmlEscaped();
+      entries.append(
+          QStringLiteral("<span style='color:%1'>&#x2501;&#x2501;</span>&nbsp;%2%3")
+              .arg(runColour(run).name(), label, run == 0 ? tr("&nbsp;(reference)") : QString()));
+    }
+  }
+  runLegend_->setText(entries.join(QStringLiteral(" &nbsp;&nbsp; ")));
+  runLegend_->setVisible(comparing);
   applyToggles();
 }
 
-void ChartPanel::addSample(int runIndex, const fooball::Metrics& metrics) {
-  data_.addSample(runIndex, metrics);
+void ChartPanel::addSample(int runIndex, const fooball::Metrics& metrics,
+                           const fooball::Divergence& fromRunZero) {
+  if (runIndex < 0 || runIndex >= data_.runCount()) return;
+  data_.addSample(runIndex, metrics, fromRunZero);
+  viewOutOfDate_ = true;
+}
+
+void ChartPanel::addBaselineSample(const fooball::Metrics& metrics,
+                                   const fooball::Divergence& fromRunZero) {
+  if (!data_.baselineShown()) return;
+  data_.addSample(ChartData::kBaseline, metrics, fromRunZero);
   viewOutOfDate_ = true;
 }
 
@@ -201,17 +307,28 @@ void ChartPanel::applyToggles() {
   residual->setQuantityShown(Quantity::EnergyResidual, residualShown && !relative);
   residual->setQuantityShown(Quantity::RelativeEnergyResidual, residualShown && relative);
   residual->setValueAxisTitle(relative ? tr("residual / |E₀|") : tr("residual (J)"));
+  charts_[kDivergenceChart]->setQuantityShown(Quantity::RmsPositionDifference,
+                                              divergenceToggle_->isChecked());
 
   // A chart with nothing to show steps aside; the top chart carries the marker labels and the
   // bottom one the time axis' labels and title.
   TimeChart* top = nullptr;
   TimeChart* bottom = nullptr;
-  for (TimeChart* chart : charts_) {
-    const bool shown = chart->showsAnyQuantity();
-    chart->setVisible(shown);
-    if (!shown) continue;
+  std::array<bool, kChartCount> shownCharts{};
+  for (std::size_t i = 0; i < charts_.size(); ++i) {
+    TimeChart* chart = charts_[i];
+    shownCharts[i] = isChartShown(chart);
+    chart->setVisible(shownCharts[i]);
+    if (!shownCharts[i]) continue;
     if (top == nullptr) top = chart;
     bottom = chart;
+  }
+  // A chart that appears would get whatever height its neighbours leave it (the divergence
+  // chart, when compare mode begins, half the panel): when the charts shown change, they share
+  // the height equally again. Heights the user dragged stay until then.
+  if (shownCharts != chartsShown_) {
+    chartsShown_ = shownCharts;
+    splitter_->setSizes(QList<int>(kChartCount, 1000));
   }
   for (TimeChart* chart : charts_) {
     chart->setMarkerLabelsShown(chart == top);
@@ -227,7 +344,7 @@ void ChartPanel::alignPlotAreas() {
   std::optional<PlotInsets> aligned;
   for (const TimeChart* chart : charts_) {
     const std::optional<PlotInsets> natural = chart->naturalPlotInsets();
-    if (!chart->showsAnyQuantity() || !natural) continue;
+    if (!isChartShown(chart) || !natural) continue;
     const PlotInsets widest = aligned.value_or(*natural);
     aligned =
         PlotInsets{std::max(widest.left, natural->left), std::max(widest.right, natural->right)};
@@ -235,7 +352,7 @@ void ChartPanel::alignPlotAreas() {
   if (!aligned) return;
   for (TimeChart* chart : charts_) {
     const std::optional<PlotInsets> natural = chart->naturalPlotInsets();
-    if (!chart->showsAnyQuantity() || !natural) continue;
+    if (!isChartShown(chart) || !natural) continue;
     const PlotInsets extra{aligned->left - natural->left, aligned->right - natural->right};
     const PlotInsets now = chart->extraMargins();
     // Half a pixel of tolerance, so rounding cannot start a relayout loop.
@@ -260,11 +377,14 @@ void ChartPanel::redraw() const {
   }
 
   std::array<const SampleHistory*, ChartData::kMaxRuns> histories{};
-  for (int run = 0; run < data_.runCount(); ++run)
-    histories[run] = &data_.history(run);
-  const std::span<const SampleHistory* const> shownHistories(histories.data(), data_.runCount());
+  const auto runCount = static_cast<std::size_t>(data_.runCount());
+  for (std::size_t run = 0; run < runCount; ++run)
+    histories[run] = &data_.history(static_cast<int>(run));
+  const std::span<const SampleHistory* const> shownHistories(histories.data(), runCount);
+  const SampleHistory* baseline =
+      data_.baselineShown() ? &data_.history(ChartData::kBaseline) : nullptr;
   for (TimeChart* chart : charts_) {
-    if (chart->showsAnyQuantity()) chart->redraw(shownHistories, timeScale);
+    if (isChartShown(chart)) chart->redraw(shownHistories, baseline, timeScale);
   }
   viewOutOfDate_ = false;
 }
@@ -299,8 +419,41 @@ int ChartPanel::displayedPointCount(int chart, int runIndex) const {
 }
 
 std::size_t ChartPanel::storedSampleCount(int runIndex) const {
+  if (runIndex == kBaselineRun) {
+    return data_.baselineShown() ? data_.history(ChartData::kBaseline).storedCount() : 0;
+  }
   if (runIndex < 0 || runIndex >= data_.runCount()) return 0;
   return data_.history(runIndex).storedCount();
+}
+
+QList<QPointF> ChartPanel::displayedPoints(int chart, int runIndex, int curve) const {
+  if (chart < 0 || chart >= kChartCount || !isChartShown(charts_[chart])) return {};
+  return charts_[chart]->points(runIndex, curve);
+}
+
+QPen ChartPanel::displayedPen(int chart, int runIndex, int curve) const {
+  if (chart < 0 || chart >= kChartCount) return QPen(Qt::NoPen);
+  return charts_[chart]->pen(runIndex, curve);
+}
+
+std::pair<double, double> ChartPanel::displayedYRange(int chart) const {
+  if (chart < 0 || chart >= kChartCount) return {0.0, 0.0};
+  return charts_[chart]->valueRange();
+}
+
+bool ChartPanel::chartShown(int chart) const {
+  return chart >= 0 && chart < kChartCount && isChartShown(charts_[chart]);
+}
+
+bool ChartPanel::isChartShown(const TimeChart* chart) const {
+  return chart->hasCurves() && chart->showsAnyQuantity();
+}
+
+QString ChartPanel::runLegendText() const {
+  if (runLegend_->isHidden()) return {};
+  QTextDocument document;
+  document.setHtml(runLegend_->text());
+  return document.toPlainText();
 }
 
 int ChartPanel::markerCount() const {
@@ -309,13 +462,17 @@ int ChartPanel::markerCount() const {
 
 int ChartPanel::displayedMarkerCount() const {
   for (const TimeChart* chart : charts_) {
-    if (chart->showsAnyQuantity()) return chart->visibleMarkerCount();
+    if (isChartShown(chart)) return chart->visibleMarkerCount();
   }
   return 0;
 }
 
 QColor ChartPanel::runColour(int runIndex) {
   return gui::runColour(runIndex);
+}
+
+QColor ChartPanel::baselineColour() {
+  return gui::baselineColour();
 }
 
 }  // namespace fooball::gui

@@ -1,17 +1,24 @@
 #pragma once
 
 #include <QColor>
+#include <QList>
+#include <QPen>
+#include <QPointF>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
 #include <array>
 #include <cstddef>
+#include <utility>
 
 #include "chart_data.h"
+#include "fooball/divergence.h"
 #include "fooball/metrics.h"
 
 class QAction;
 class QDoubleSpinBox;
+class QLabel;
+class QSplitter;
 class QTimer;
 class QToolBar;
 
@@ -19,28 +26,60 @@ namespace fooball::gui {
 
 class TimeChart;
 
-/// The live charts against simulated time: momentum, energy and the energy budget's residual,
-/// for one run or two overlaid (compare mode), with markers for interactions and setting
-/// changes. Samples go into bounded histories; a timer redraws at most 10 times a second, and
-/// each curve holds at most two points per pixel column, so the charts cost the same however
-/// long the run and never hold the simulation back.
+/// The live charts against simulated time: momentum, energy and the energy budget's residual
+/// of every run overlaid (1 to 8, as in the run group), each run in its colour in compare mode,
+/// and the divergence from run 0 of every other run and of the chaos baseline; with markers for
+/// interactions and setting changes. Samples go into bounded histories; a timer redraws at most
+/// 10 times a second, and each curve holds at most two points per pixel column, so the charts
+/// cost the same however long the run and never hold the simulation back.
+///
+/// Runs are numbered as in the fooball::RunGroup: run 0 is the reference. Adding, removing and
+/// renaming a run keeps every other run's history; only reset() starts over.
 class ChartPanel : public QWidget {
   Q_OBJECT
 
  public:
-  /// The charts, top to bottom, for displayedPointCount().
-  enum Chart : int { kMomentumChart = 0, kEnergyChart = 1, kResidualChart = 2 };
-  static constexpr int kChartCount = 3;
+  /// The charts, top to bottom, for displayedPointCount() and displayedPoints().
+  enum Chart : int {
+    kMomentumChart = 0,   ///< curves: px, py, |p|
+    kEnergyChart = 1,     ///< curves: kinetic, potential, total
+    kResidualChart = 2,   ///< curves: residual (J), residual / |E₀|
+    kDivergenceChart = 3  ///< curves: RMS position difference from run 0 (log axis)
+  };
+  static constexpr int kChartCount = 4;
+  /// The run index that stands for the chaos baseline in the queries below.
+  static constexpr int kBaselineRun = ChartData::kBaseline;
+  static constexpr int kMaxRuns = ChartData::kMaxRuns;
 
   explicit ChartPanel(QWidget* parent = nullptr);
   ~ChartPanel() override;
 
-  /// Starts over (new scene, restart): clears every series and marker. `runs` names the curves'
-  /// owners: one backend name, or two in compare mode (e.g. {"elastic", "exact"}).
-  void reset(const QStringList& runs);
-  /// One state of run `runIndex` (0 or 1; others are ignored). Cheap: stores into a history;
-  /// the view is redrawn by a timer, not per sample.
-  void addSample(int runIndex, const fooball::Metrics& metrics);
+  /// Starts over (new scene, restart): clears every run's samples, the baseline's and the
+  /// markers, with one curve set per label (1 to kMaxRuns; none means one unnamed run). A run's
+  /// label is its run spec, e.g. {"elastic", "elastic:substeps=16", "exact"}. Whether the
+  /// baseline is shown stays as it was.
+  void reset(const QStringList& runLabels);
+  /// Appends a run (compare mode begins, or grows); the others' history stays. Ignored when
+  /// kMaxRuns are there.
+  void addRun(const QString& label);
+  /// Drops run `runIndex`'s history; later runs shift down one (their colours with them, as a
+  /// colour belongs to a run index). Ignored for the last run left.
+  void removeRun(int runIndex);
+  /// A run's spec changed: the legend and the CSV's run column follow; its history stays.
+  void renameRun(int runIndex, const QString& label);
+  /// Whether the chaos baseline's curves exist. Hiding them drops the baseline's history (the
+  /// run group drops the baseline, and one turned on again starts afresh from run 0's state).
+  void setBaselineShown(bool shown);
+  bool baselineShown() const { return data_.baselineShown(); }
+  int runCount() const { return data_.runCount(); }
+
+  /// One state of run `runIndex` and its divergence from run 0 then (zero for run 0). Cheap:
+  /// stores into a history; the view is redrawn by a timer, not per sample. Ignored for an
+  /// index that is not a run.
+  void addSample(int runIndex, const fooball::Metrics& metrics,
+                 const fooball::Divergence& fromRunZero);
+  /// One state of the chaos baseline; ignored while it is not shown.
+  void addBaselineSample(const fooball::Metrics& metrics, const fooball::Divergence& fromRunZero);
   /// A vertical mark on the time axis (s): a mouse interaction or a setting change ("gravity",
   /// "grab").
   void addMarker(double time, const QString& label);
@@ -48,26 +87,44 @@ class ChartPanel : public QWidget {
   /// run.
   void setWindowSeconds(double seconds);  // default 20 s
   void setShowWholeRun(bool whole);
-  /// File → Export: PNG of the charts as laid out at the panel's size (also while hidden), at
-  /// twice the screen's pixels; CSV of every stored sample (header + one row per sample per
-  /// run, with a `run` column holding the run's name). False when the file was not written.
+  /// File → Export: PNG of the charts (and the run legend) as laid out at the panel's size
+  /// (also while hidden), at twice the screen's pixels; CSV of every stored sample (header + one
+  /// row per sample per run, with a `run` column holding the run's label, `baseline` for the
+  /// chaos baseline). False when the file was not written.
   bool exportPng(const QString& path) const;
   bool exportCsv(const QString& path) const;
-  /// For tests: points the view currently holds for `runIndex` in chart `chart` (after a
-  /// refresh; the largest count over that run's shown curves), and samples stored.
+  /// For tests: points the view currently holds for `runIndex` (or kBaselineRun) in chart
+  /// `chart` (after a refresh; the largest count over that run's shown curves), and samples
+  /// stored.
   int displayedPointCount(int chart, int runIndex) const;
   std::size_t storedSampleCount(int runIndex) const;
+  /// For tests: the points a chart plots for a run (after a refresh), `curve` numbering the
+  /// chart's quantities as in Chart; empty for a hidden chart or curve. Their pen, and the
+  /// value axis' range.
+  QList<QPointF> displayedPoints(int chart, int runIndex, int curve = 0) const;
+  QPen displayedPen(int chart, int runIndex, int curve = 0) const;
+  std::pair<double, double> displayedYRange(int chart) const;
+  /// Whether `chart` is on screen: it has something to show and its toggles are on.
+  bool chartShown(int chart) const;
+  /// The run legend above the charts, as plain text (empty when it is hidden: one run).
+  QString runLegendText() const;
   /// Markers held, and those inside the time axis's current range (drawn, after a refresh).
   int markerCount() const;
   int displayedMarkerCount() const;
   /// Redraws now (the timer calls it; tests call it directly).
   void refresh();
 
-  /// The colour of run `runIndex`'s curves in compare mode, for anything that should match.
+  /// The colour of run `runIndex`'s curves in compare mode (8 distinct ones), for anything that
+  /// should match: the simulation view's rings, the compare readout.
   static QColor runColour(int runIndex);
+  /// The chaos baseline's colour: grey.
+  static QColor baselineColour();
 
  private:
   QToolBar* createToolBar();
+  /// Every chart's curves and the run legend follow the runs and the baseline.
+  void rebuildCurves();
+  bool isChartShown(const TimeChart* chart) const;
   QAction* addQuantityToggle(QToolBar* toolBar, const QString& text, const QString& toolTip,
                              const QString& objectName);
   /// Shows and hides curves and charts as the toggles say.
@@ -78,7 +135,10 @@ class ChartPanel : public QWidget {
 
   ChartData data_;
   std::array<TimeChart*, kChartCount> charts_{};
-  QWidget* chartArea_ = nullptr;
+  QWidget* chartArea_ = nullptr;  ///< the run legend and the charts: what exportPng draws
+  QLabel* runLegend_ = nullptr;
+  QSplitter* splitter_ = nullptr;
+  std::array<bool, kChartCount> chartsShown_{};  ///< as last laid out, to see when that changes
 
   QAction* wholeRunToggle_ = nullptr;
   QDoubleSpinBox* windowSpin_ = nullptr;  ///< s, the scrolling window's length
@@ -90,6 +150,7 @@ class ChartPanel : public QWidget {
   QAction* totalToggle_ = nullptr;
   QAction* residualToggle_ = nullptr;
   QAction* relativeResidualToggle_ = nullptr;
+  QAction* divergenceToggle_ = nullptr;
 
   QTimer* refreshTimer_ = nullptr;
   /// The view is a cache of data_: redrawing it changes nothing the panel holds, so a const

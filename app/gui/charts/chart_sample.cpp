@@ -5,7 +5,8 @@
 
 namespace fooball::gui {
 
-ChartSample chartSampleFrom(const Metrics& metrics, double initialTotalEnergy) {
+ChartSample chartSampleFrom(const Metrics& metrics, const Divergence& fromRunZero,
+                            double initialTotalEnergy) {
   const StateSums& sums = metrics.sums;
   ChartSample sample;
   sample.time = metrics.time;
@@ -20,6 +21,8 @@ ChartSample chartSampleFrom(const Metrics& metrics, double initialTotalEnergy) {
   sample[Quantity::RelativeEnergyResidual] =
       initialTotalEnergy != 0.0 ? metrics.energyResidual / std::abs(initialTotalEnergy)
                                 : std::numeric_limits<double>::quiet_NaN();
+  sample[Quantity::RmsPositionDifference] = fromRunZero.rmsPositionDifference;
+  sample[Quantity::MaxPositionDifference] = fromRunZero.maxPositionDifference;
   return sample;
 }
 

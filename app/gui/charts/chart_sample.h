@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 
+#include "fooball/divergence.h"
 #include "fooball/metrics.h"
 
 namespace fooball::gui {
@@ -17,9 +18,11 @@ enum class Quantity : std::size_t {
   TotalEnergy,             ///< J
   EnergyResidual,          ///< J, Metrics::energyResidual: the method's own error
   RelativeEnergyResidual,  ///< energyResidual / |E₀|; NaN when E₀ is zero
+  RmsPositionDifference,   ///< m, Divergence::rmsPositionDifference from run 0
+  MaxPositionDifference,   ///< m, Divergence::maxPositionDifference from run 0
 };
-inline constexpr std::size_t kQuantityCount = 8;
-static_assert(static_cast<std::size_t>(Quantity::RelativeEnergyResidual) + 1 == kQuantityCount);
+inline constexpr std::size_t kQuantityCount = 10;
+static_assert(static_cast<std::size_t>(Quantity::MaxPositionDifference) + 1 == kQuantityCount);
 
 /// One state of one run, reduced to what the charts show.
 struct ChartSample {
@@ -30,7 +33,9 @@ struct ChartSample {
   double& operator[](Quantity quantity) { return values[static_cast<std::size_t>(quantity)]; }
 };
 
+/// `fromRunZero` is the run's divergence from run 0 at the same time (zero for run 0 itself);
 /// `initialTotalEnergy` (J) is E₀, the run's first total energy, for the relative residual.
-ChartSample chartSampleFrom(const Metrics& metrics, double initialTotalEnergy);
+ChartSample chartSampleFrom(const Metrics& metrics, const Divergence& fromRunZero,
+                            double initialTotalEnergy);
 
 }  // namespace fooball::gui

@@ -1,6 +1,9 @@
 #include "chart_style.h"
 
 #include <QList>
+#include <array>
+
+#include "fooball/run_group.h"
 
 namespace fooball::gui {
 namespace {
@@ -29,6 +32,10 @@ QuantityLook lookOf(Quantity quantity) {
     case Quantity::EnergyResidual:
     case Quantity::RelativeEnergyResidual:
       return {QColor(0x81, 0xc7, 0x84), 0};
+    case Quantity::RmsPositionDifference:
+      return {QColor(0xce, 0x93, 0xd8), 0};
+    case Quantity::MaxPositionDifference:
+      return {QColor(0xce, 0x93, 0xd8), 1};
   }
   return {Qt::white, 0};
 }
@@ -36,21 +43,47 @@ QuantityLook lookOf(Quantity quantity) {
 }  // namespace
 
 QColor runColour(int runIndex) {
-  return runIndex == 0 ? QColor(0xff, 0xa7, 0x26) : QColor(0x26, 0xc6, 0xda);
+  // Runs 0 and 1 keep the colours two-run compare mode always had. The rest go round the hue
+  // circle between them, alternating warm and cool so that neighbouring runs differ most.
+  static const std::array<QColor, 8> kColours{
+      QColor(0xff, 0xa7, 0x26),  // orange
+      QColor(0x26, 0xc6, 0xda),  // cyan
+      QColor(0xe0, 0x40, 0xfb),  // magenta
+      QColor(0x9c, 0xe0, 0x4c),  // lime
+      QColor(0xff, 0x52, 0x52),  // red
+      QColor(0x5c, 0x8d, 0xff),  // blue
+      QColor(0xff, 0xee, 0x58),  // yellow
+      QColor(0x69, 0xf0, 0xae),  // green
+  };
+  static_assert(kColours.size() == RunGroup::kMaxRuns);
+  const auto count = static_cast<int>(kColours.size());
+  return kColours[static_cast<std::size_t>(((runIndex % count) + count) % count)];
 }
 
-QPen curvePen(Quantity quantity, int runIndex, int runCount) {
+QColor baselineColour() {
+  return QColor(0x9e, 0x9e, 0x9e);
+}
+
+QPen baselinePen() {
+  // As heavy as a run's headline curve, so it can be followed at a glance; the dashes say it is
+  // a reference, not a method.
+  QPen pen(baselineColour(), 2.0);
+  pen.setDashPattern({4.0, 3.0});
+  return pen;
+}
+
+QPen curvePen(Quantity quantity, int runIndex, bool colourByRun) {
   const QuantityLook look = lookOf(quantity);
-  const QColor colour = runCount < 2 ? look.singleRunColour : runColour(runIndex);
+  const QColor colour = colourByRun ? runColour(runIndex) : look.singleRunColour;
   // The headline curve is heavier, so the eye finds it first.
   if (look.rank == 0) return QPen(colour, 2.0);
   // The parts are one pixel wide: Qt draws such lines directly, where a wider pen is stroked
   // into an outline first, which over thousands of points costs milliseconds a frame. Not
   // cosmetic, so an export at twice the pixels draws them twice as wide, like everything else.
   QPen pen(colour, 1.0);
-  // With two runs the colour says the run, so the line style says the part: dashed for the
+  // In compare mode the colour says the run, so the line style says the part: dashed for the
   // first, dotted for the second (patterns in pen widths).
-  if (runCount >= 2) {
+  if (colourByRun) {
     pen.setDashPattern(look.rank == 1 ? QList<qreal>{6.0, 3.0} : QList<qreal>{1.5, 2.5});
   }
   return pen;
@@ -74,6 +107,10 @@ QString quantityName(Quantity quantity) {
       return QStringLiteral("residual");
     case Quantity::RelativeEnergyResidual:
       return QStringLiteral("residual / |E₀|");
+    case Quantity::RmsPositionDifference:
+      return QStringLiteral("RMS Δposition");
+    case Quantity::MaxPositionDifference:
+      return QStringLiteral("max Δposition");
   }
   return {};
 }

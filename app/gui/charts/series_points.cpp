@@ -6,12 +6,16 @@
 namespace fooball::gui {
 
 ValueRange fillSeriesPoints(const SampleHistory& history, Quantity quantity, double timeStart,
-                            double timeEnd, int maxPoints, QList<QPointF>& points) {
+                            double timeEnd, int maxPoints, QList<QPointF>& points,
+                            bool positiveOnly) {
   points.clear();
+  const auto kept = [positiveOnly](double value) {
+    return std::isfinite(value) && (!positiveOnly || value > 0.0);
+  };
   ValueRange range;
   if (history.valueCountSince(timeStart) <= static_cast<std::size_t>(maxPoints)) {
     history.forEachValueSince(timeStart, quantity, [&](double time, double value) {
-      if (!std::isfinite(value)) return;
+      if (!kept(value)) return;
       points.append(QPointF(time, value));
       range.include(value);
     });
@@ -33,7 +37,7 @@ ValueRange fillSeriesPoints(const SampleHistory& history, Quantity quantity, dou
     range.include(highest.y());
   };
   history.forEachValueSince(timeStart, quantity, [&](double time, double value) {
-    if (!std::isfinite(value)) return;
+    if (!kept(value)) return;
     const double binPosition = std::floor((time - timeStart) * binsPerSecond);
     const int bin = static_cast<int>(std::clamp(binPosition, 0.0, binCount - 1.0));
     if (bin != currentBin) {

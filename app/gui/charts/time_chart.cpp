@@ -5,6 +5,7 @@
 #include <QGraphicsLayout>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QLogValueAxis>
 #include <QValueAxis>
 #include <algorithm>
 #include <cmath>
@@ -36,9 +37,7 @@ QFont sizedFont(const QFont& base, double pointSize, bool bold = false) {
   return font;
 }
 
-void styleAxis(QValueAxis* axis, const QFont& baseFont) {
-  axis->setTickType(QValueAxis::TicksDynamic);
-  axis->setTickAnchor(0.0);
+void styleAxis(QAbstractAxis* axis, const QFont& baseFont) {
   axis->setLabelsFont(sizedFont(baseFont, 8.0));
   axis->setLabelsBrush(chart_colours::kLabel);
   axis->setTitleFont(sizedFont(baseFont, 8.0));
@@ -50,12 +49,32 @@ void styleAxis(QValueAxis* axis, const QFont& baseFont) {
   axis->setShadesVisible(false);
 }
 
+void styleAxis(QValueAxis* axis, const QFont& baseFont) {
+  axis->setTickType(QValueAxis::TicksDynamic);
+  axis->setTickAnchor(0.0);
+  styleAxis(static_cast<QAbstractAxis*>(axis), baseFont);
+}
+
+void applyScale(QLogValueAxis* axis, const LogAxisScale& scale) {
+  // Labels sit at the powers of the base: a base of 10^k labels every k-th decade. As with a
+  // linear axis' interval, the base grows before the range and shrinks after it, so no layout
+  // in between has a label per decade over a range of hundreds of decades.
+  const double base = std::pow(10.0, scale.decadesPerTick);
+  if (base >= axis->base()) {
+    axis->setBase(base);
+    axis->setRange(scale.min(), scale.max());
+  } else {
+    axis->setRange(scale.min(), scale.max());
+    axis->setBase(base);
+  }
+}
+
 void applyScale(QValueAxis* axis, const AxisScale& scale) {
   // Every change relays the ticks out: in between, the new range must not meet the old, finer
   // interval (a range 10⁵ times wider would create 10⁵ tick items). Widen the interval before
   // the range, narrow it after.
   if (axis->tickType() != QValueAxis::TicksDynamic) {
-    // Fixed ticks (see TimeChart::setRuns) are a handful whatever the range: set both, then
+    // Fixed ticks (see TimeChart::setOwners) are a handful whatever the range: set both, then
     // go back to ticks at round values.
     axis->setRange(scale.min, scale.max);
     axis->setTickInterval(scale.tickInterval);
@@ -73,15 +92,22 @@ void applyScale(QValueAxis* axis, const AxisScale& scale) {
 }  // namespace
 
 TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
-                     const std::deque<ChartMarker>* markers, QWidget* parent)
+                     const std::deque<ChartMarker>* markers, ValueAxisKind valueAxisKind,
+                     QWidget* parent)
     // The chart goes to the view's constructor, which owns it from then on. QChartView(parent)
     // would make a default chart of its own that a later setChart() takes out of the scene but
     // leaves to us to delete (30 kB lost per chart, found by LeakSanitizer).
     : QChartView(new QChart, parent),
       chart_(QChartView::chart()),
       timeAxis_(new QValueAxis(chart_)),
-      valueAxis_(new QValueAxis(chart_)),
       quantities_(std::move(quantities)) {
+  if (valueAxisKind == ValueAxisKind::Logarithmic) {
+    logAxis_ = new QLogValueAxis(chart_);
+    valueAxis_ = logAxis_;
+  } else {
+    linearAxis_ = new QValueAxis(chart_);
+    valueAxis_ = linearAxis_;
+  }
   // The theme first: it restyles everything already in the chart.
   chart_->setTheme(QChart::ChartThemeDark);
   chart_->setAnimationOptions(QChart::NoAnimation);
@@ -104,7 +130,14 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
   chart_->addAxis(timeAxis_, Qt::AlignBottom);
   chart_->addAxis(valueAxis_, Qt::AlignLeft);
   styleAxis(timeAxis_, font());
-  styleAxis(valueAxis_, font());
+  if (linearAxis_ != nullptr) styleAxis(linearAxis_, font());
+  if (logAxis_ != nullptr) {
+    styleAxis(static_cast<QAbstractAxis*>(logAxis_), font());
+    logAxis_->setMinorTickCount(0);
+    // "1e-09", "0.001", "1", "1000": short, and exact at powers of ten.
+    logAxis_->setLabelFormat(QStringLiteral("%g"));
+    applyScale(logAxis_, LogAxisScale{});
+  }
   timeAxis_->setTitleText(tr("time (s)"));
 
   setRenderHint(QPainter::Antialiasing);
@@ -125,34 +158,41 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
   });
 }
 
-void TimeChart::setRuns(const QStringList& runNames) {
+void TimeChart::setOwners(const std::vector<CurveOwner>& owners, bool colourByRun) {
   // Attaching a series resets an axis' range to its domain's, whatever the tick interval: from
   // a residual axis ticked every 1e-12 J to a range of 1 that is 10¹² tick items (the window
   // hung there). A fixed tick count is safe until the next redraw sets a range and interval.
   timeAxis_->setTickType(QValueAxis::TicksFixed);
-  valueAxis_->setTickType(QValueAxis::TicksFixed);
+  if (linearAxis_ != nullptr) linearAxis_->setTickType(QValueAxis::TicksFixed);
   removeAllSeries();
   valueScale_.reset();
-  const int runCount = static_cast<int>(runNames.size());
-  for (int run = 0; run < runCount; ++run) {
+  logValueScale_.reset();
+  colourByRun_ = colourByRun;
+  bool hasBaseline = false;
+  for (const CurveOwner& owner : owners) {
+    const bool baseline = owner.run == ChartData::kBaseline;
+    hasBaseline = hasBaseline || baseline;
     for (const Quantity quantity : quantities_) {
-      const QString name = runCount > 1
-                               ? runNames[run] + QStringLiteral(" · ") + quantityName(quantity)
-                               : quantityName(quantity);
-      Curve curve{quantity, run, addSeries(name, curvePen(quantity, run, runCount)), {}};
+      const QString name = quantities_.size() > 1 && (baseline || !colourByRun)
+                               ? owner.label + QStringLiteral(" · ") + quantityName(quantity)
+                               : owner.label;
+      const QPen pen = baseline ? baselinePen() : curvePen(quantity, owner.run, colourByRun);
+      Curve curve{quantity, owner.run, addSeries(name, pen), {}};
       curve.points.reserve(kMaxPointsPerCurve);
       curves_.push_back(std::move(curve));
     }
   }
-  if (runCount > 1) {
-    for (int run = 0; run < runCount; ++run) {
-      legendKeys_.push_back({addSeries(runNames[run], QPen(runColour(run), 3.0)), std::nullopt});
-    }
+  if (colourByRun && quantities_.size() > 1) {
     for (const Quantity quantity : quantities_) {
-      QPen stylePen = curvePen(quantity, 0, runCount);
+      QPen stylePen = curvePen(quantity, 0, true);
       stylePen.setColor(chart_colours::kLabel);
       legendKeys_.push_back({addSeries(quantityName(quantity), stylePen), quantity});
     }
+  }
+  if (hasBaseline) {
+    legendKeys_.push_back(
+        {addSeries(tr("chaos baseline: run 0 with every ball moved 1e-9 m"), baselinePen()),
+         std::nullopt});
   }
   applyShownQuantities();
 }
@@ -195,15 +235,20 @@ void TimeChart::setQuantityShown(Quantity quantity, bool shown) {
 
 void TimeChart::applyShownQuantities() {
   QLegend* legend = chart_->legend();
-  const auto setLegendEntryShown = [legend](QLineSeries* series, bool shown) {
+  bool anyEntry = false;
+  const auto setLegendEntryShown = [legend, &anyEntry](QLineSeries* series, bool shown) {
     for (QLegendMarker* marker : legend->markers(series))
       marker->setVisible(shown);
+    anyEntry = anyEntry || shown;
   };
   // A series' visibility resets its legend entry, so the entry is set after it.
   for (Curve& curve : curves_) {
     const bool shown = isShown(curve.quantity);
     curve.series->setVisible(shown);
-    setLegendEntryShown(curve.series, shown && legendKeys_.empty());
+    // Single-run colours name each curve; in compare mode the keys below do, and the baseline
+    // has a key of its own either way.
+    const bool named = !colourByRun_ && curve.run != ChartData::kBaseline;
+    setLegendEntryShown(curve.series, shown && named);
     if (!shown) {
       curve.points.clear();
       curve.series->clear();
@@ -212,6 +257,10 @@ void TimeChart::applyShownQuantities() {
   for (const LegendKey& key : legendKeys_) {
     setLegendEntryShown(key.series, key.quantity ? isShown(*key.quantity) : showsAnyQuantity());
   }
+  // An empty legend gives its row back to the plot. (Not from the markers' isVisible(): a
+  // hidden legend's markers all say false.)
+  legend->setVisible(anyEntry);
+  updateMinimumHeight();
 }
 
 bool TimeChart::showsAnyQuantity() const {
@@ -238,7 +287,8 @@ void TimeChart::updateMinimumHeight() {
   // The value axis' title runs up the side of the plot: shorter, and Qt elides it.
   const double plot =
       std::max(kMinPlotHeight, axisTitle.horizontalAdvance(valueAxis_->titleText()) + 8.0);
-  double height = kChartMargins.top() + kChartMargins.bottom() + title.height() + legend.height() +
+  const double legendHeight = chart_->legend()->isVisible() ? legend.height() : 0.0;
+  double height = kChartMargins.top() + kChartMargins.bottom() + title.height() + legendHeight +
                   plot + tickLabels.height() + kLayoutSpacing;
   if (timeAxis_->isTitleVisible()) height += axisTitle.height();
   setMinimumHeight(static_cast<int>(std::ceil(height)));
@@ -250,17 +300,24 @@ void TimeChart::setMarkerLabelsShown(bool shown) {
 
 void TimeChart::forgetValueScale() {
   valueScale_.reset();
+  logValueScale_.reset();
 }
 
 void TimeChart::redraw(std::span<const SampleHistory* const> histories,
-                       const AxisScale& timeScale) {
+                       const SampleHistory* baseline, const AxisScale& timeScale) {
   const int maxPoints = maxPointsPerCurve();
   ValueRange shownValues;
   for (Curve& curve : curves_) {
     if (!isShown(curve.quantity)) continue;
-    if (static_cast<std::size_t>(curve.runIndex) < histories.size()) {
-      shownValues.include(fillSeriesPoints(*histories[curve.runIndex], curve.quantity,
-                                           timeScale.min, timeScale.max, maxPoints, curve.points));
+    const SampleHistory* history = nullptr;
+    if (curve.run == ChartData::kBaseline) {
+      history = baseline;
+    } else if (curve.run >= 0 && static_cast<std::size_t>(curve.run) < histories.size()) {
+      history = histories[static_cast<std::size_t>(curve.run)];
+    }
+    if (history != nullptr) {
+      shownValues.include(fillSeriesPoints(*history, curve.quantity, timeScale.min, timeScale.max,
+                                           maxPoints, curve.points, logarithmic()));
     } else {
       curve.points.clear();
     }
@@ -291,20 +348,52 @@ int TimeChart::valueTicksFor(const QRectF& plotArea) {
 
 void TimeChart::fitValueAxis() {
   const int ticks = valueTicksFor(chart_->plotArea());
-  if (ticks != valueTicks_) valueScale_.reset();
+  if (ticks != valueTicks_) forgetValueScale();
   valueTicks_ = ticks;
-  valueScale_ = followValues(shownValues_, valueScale_, ticks);
-  applyScale(valueAxis_, *valueScale_);
+  if (logAxis_ != nullptr) {
+    logValueScale_ = followLogValues(shownValues_, logValueScale_, ticks);
+    applyScale(logAxis_, *logValueScale_);
+  } else {
+    valueScale_ = followValues(shownValues_, valueScale_, ticks);
+    applyScale(linearAxis_, *valueScale_);
+  }
 }
 
-int TimeChart::pointCount(int runIndex) const {
+int TimeChart::pointCount(int run) const {
   int count = 0;
   for (const Curve& curve : curves_) {
-    if (curve.runIndex == runIndex && isShown(curve.quantity)) {
-      count = std::max(count, curve.series->count());
+    if (curve.run == run && isShown(curve.quantity)) {
+      count = std::max(count, static_cast<int>(curve.series->count()));
     }
   }
   return count;
+}
+
+const TimeChart::Curve* TimeChart::findCurve(int run, int quantityIndex) const {
+  if (quantityIndex < 0 || static_cast<std::size_t>(quantityIndex) >= quantities_.size()) {
+    return nullptr;
+  }
+  const Quantity quantity = quantities_[static_cast<std::size_t>(quantityIndex)];
+  for (const Curve& curve : curves_) {
+    if (curve.run == run && curve.quantity == quantity) return &curve;
+  }
+  return nullptr;
+}
+
+QList<QPointF> TimeChart::points(int run, int quantityIndex) const {
+  const Curve* curve = findCurve(run, quantityIndex);
+  if (curve == nullptr || !isShown(curve->quantity)) return {};
+  return curve->series->points();
+}
+
+QPen TimeChart::pen(int run, int quantityIndex) const {
+  const Curve* curve = findCurve(run, quantityIndex);
+  return curve != nullptr ? curve->series->pen() : QPen(Qt::NoPen);
+}
+
+std::pair<double, double> TimeChart::valueRange() const {
+  if (logAxis_ != nullptr) return {logAxis_->min(), logAxis_->max()};
+  return {linearAxis_->min(), linearAxis_->max()};
 }
 
 int TimeChart::visibleMarkerCount() const {

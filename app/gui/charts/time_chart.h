@@ -5,10 +5,11 @@
 #include <QPen>
 #include <QPointF>
 #include <QRectF>
-#include <QStringList>
+#include <QString>
 #include <deque>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "axis_scale.h"
@@ -16,7 +17,9 @@
 #include "chart_sample.h"
 #include "sample_history.h"
 
+class QAbstractAxis;
 class QLineSeries;
+class QLogValueAxis;
 class QValueAxis;
 
 namespace fooball::gui {
@@ -29,7 +32,7 @@ struct PlotInsets {
   double right = 0.0;
 };
 
-/// One chart of the panel: a few quantities of every run against simulated time, on a dark
+/// One chart of the panel: a few quantities of some runs against simulated time, on a dark
 /// plot, with the markers over it. It draws what it is given and keeps no samples itself.
 class TimeChart : public QChartView {
  public:
@@ -38,11 +41,26 @@ class TimeChart : public QChartView {
   static constexpr int kMaxPointsPerCurve = 2000;
   static constexpr int kMinPointsPerCurve = 200;
 
-  TimeChart(const QString& title, std::vector<Quantity> quantities,
-            const std::deque<ChartMarker>* markers, QWidget* parent = nullptr);
+  /// A log value axis draws only positive values.
+  enum class ValueAxisKind { Linear, Logarithmic };
 
-  /// One curve per quantity and run; compare mode when there are two runs.
-  void setRuns(const QStringList& runNames);
+  /// A run whose quantities the chart draws.
+  struct CurveOwner {
+    int run = 0;    ///< index into redraw()'s histories, or ChartData::kBaseline
+    QString label;  ///< the curves' name (legend entries, in single-run colours)
+  };
+
+  TimeChart(const QString& title, std::vector<Quantity> quantities,
+            const std::deque<ChartMarker>* markers,
+            ValueAxisKind valueAxisKind = ValueAxisKind::Linear, QWidget* parent = nullptr);
+
+  /// One curve per quantity and owner. `colourByRun` is compare mode: each run's curves in its
+  /// colour, a line style per quantity, and a legend that names the styles (the panel's run
+  /// legend names the colours); otherwise each quantity has its own colour and legend entry.
+  /// The baseline's curves are grey and dashed whatever the mode, with a legend entry of their
+  /// own.
+  void setOwners(const std::vector<CurveOwner>& owners, bool colourByRun);
+  bool hasCurves() const { return !curves_.empty(); }
   void setQuantityShown(Quantity quantity, bool shown);
   bool showsAnyQuantity() const;
 
@@ -54,12 +72,19 @@ class TimeChart : public QChartView {
   /// The next redraw fits the value axis to the data afresh instead of keeping its range.
   void forgetValueScale();
 
-  /// Redraws every shown curve from its run's history (`histories[runIndex]`) on the time axis
-  /// `timeScale`: one replace() per curve from a buffer that keeps its capacity.
-  void redraw(std::span<const SampleHistory* const> histories, const AxisScale& timeScale);
+  /// Redraws every shown curve from its owner's history (`histories[run]`, or `baseline`) on the
+  /// time axis `timeScale`: one replace() per curve from a buffer that keeps its capacity.
+  void redraw(std::span<const SampleHistory* const> histories, const SampleHistory* baseline,
+              const AxisScale& timeScale);
 
-  /// Points in the curves of run `runIndex` (the largest count over its shown quantities).
-  int pointCount(int runIndex) const;
+  /// Points in the curves of `run` (the largest count over its shown quantities).
+  int pointCount(int run) const;
+  /// The points `run`'s curve of the chart's `quantityIndex`-th quantity holds (none when it
+  /// has no such curve or it is hidden), and its pen (Qt::NoPen then).
+  QList<QPointF> points(int run, int quantityIndex) const;
+  QPen pen(int run, int quantityIndex) const;
+  /// The value axis' range, as last drawn.
+  std::pair<double, double> valueRange() const;
   int visibleMarkerCount() const;
 
   /// px from the chart's edges to its plot area's without the extra margins below: on the left
@@ -73,20 +98,21 @@ class TimeChart : public QChartView {
  private:
   struct Curve {
     Quantity quantity;
-    int runIndex;
+    int run;
     QLineSeries* series;
     QList<QPointF> points;  ///< reused on every redraw
   };
 
-  /// An empty series that only puts an entry in the legend. In compare mode the legend names
-  /// the runs (their colours) and the quantities (their line styles) once each, rather than
-  /// every run × quantity pair.
+  /// An empty series that only puts an entry in the legend: in compare mode a quantity's line
+  /// style, once for all runs, and the baseline's look.
   struct LegendKey {
     QLineSeries* series;
-    std::optional<Quantity> quantity;  ///< none for a run's key
+    std::optional<Quantity> quantity;  ///< none for the baseline's key
   };
 
+  const Curve* findCurve(int run, int quantityIndex) const;
   bool isShown(Quantity quantity) const;
+  bool logarithmic() const { return logAxis_ != nullptr; }
   int maxPointsPerCurve() const;
   QLineSeries* addSeries(const QString& name, const QPen& pen);
   void removeAllSeries();
@@ -102,15 +128,20 @@ class TimeChart : public QChartView {
 
   QChart* chart_;
   QValueAxis* timeAxis_;
-  QValueAxis* valueAxis_;
+  /// The value axis: one of these two, the other null.
+  QValueAxis* linearAxis_ = nullptr;
+  QLogValueAxis* logAxis_ = nullptr;
+  QAbstractAxis* valueAxis_ = nullptr;
   MarkerOverlay* markerOverlay_;
   std::vector<Quantity> quantities_;
   std::vector<Quantity> hiddenQuantities_;
   std::vector<Curve> curves_;
   std::vector<LegendKey> legendKeys_;
+  bool colourByRun_ = false;
   ValueRange shownValues_;  ///< of the shown curves, as last drawn
   std::optional<AxisScale> valueScale_;
-  int valueTicks_ = 0;  ///< tick intervals valueScale_ was chosen for
+  std::optional<LogAxisScale> logValueScale_;
+  int valueTicks_ = 0;  ///< tick intervals the value scale was chosen for
   std::optional<PlotInsets> naturalPlotInsets_;
   PlotInsets extraMargins_;
 };

@@ -30,13 +30,17 @@ struct Diagnostic {
 };
 
 /// One physics method simulating one scene. All backends obey the same contract (DESIGN.md,
-/// "Backend contract"), proven by tests/conformance_test.cpp:
+/// "Backend contract"), proven by tests/conformance_test.cpp (each backend's tolerances are its
+/// row in tests/backend_profiles.cpp):
 /// - momentum is conserved in ball–ball collisions, walls that are on reflect;
 /// - with all walls on, every ball stays inside the box, never NaN;
 /// - restitution is 1: any energy loss is a measured defect of the method;
 /// - deterministic: the same scene, settings and forces give the same trajectory;
 /// - no allocation per step in steady state.
 /// Balls keep their scene index for their whole life, whatever order a backend stores them in.
+/// A backend holds only what its method needs: the scene itself (name, colours, anything else a
+/// user sees) belongs to whoever loaded it, e.g. the Simulation, which reads positions and
+/// velocities back with readState. Switching backend is next.load(simulation.scene()).
 class Backend {
  public:
   explicit Backend(std::vector<OptionSpec> optionSpecs) : options_(std::move(optionSpecs)) {}
@@ -44,12 +48,10 @@ class Backend {
   Backend(const Backend&) = delete;
   Backend& operator=(const Backend&) = delete;
 
-  /// Replaces the whole state with `scene` (already validated) and zeroes the counters.
-  /// Switching backend is next.load(current.save()).
+  /// Replaces the whole state with `scene` (already validated) and zeroes the counters. The
+  /// backend keeps what it simulates (box, world, radii, masses, positions, velocities), not the
+  /// scene's name or colours.
   virtual void load(const Scene& scene) = 0;
-
-  /// The current state as a scene: same balls in the same order, same box and world.
-  virtual Scene save() const = 0;
 
   /// Changes gravity, drag, collisions or walls from now on; positions and velocities stay.
   virtual void setWorld(const WorldSettings& world) = 0;
@@ -59,7 +61,8 @@ class Backend {
   /// J·(v + J/2m) for every backend; the driver books it in the energy budget.
   virtual void step(double dt, std::span<const Vec2> forces) = 0;
 
-  /// Replaces ball `index` (already validated), e.g. an edit in the inspector.
+  /// Replaces ball `index` (already validated), e.g. an edit in the inspector; its colour is
+  /// the caller's to keep.
   virtual void setBall(std::size_t index, const BallDef& ball) = 0;
 
   virtual std::size_t ballCount() const = 0;

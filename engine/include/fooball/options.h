@@ -7,6 +7,14 @@
 
 namespace fooball {
 
+/// What a knob means to the tools that vary it, so none of them matches options by name.
+enum class OptionRole {
+  Other,
+  Substeps,    ///< solver steps per simulation step: the trade-off grid's accuracy axis
+  Iterations,  ///< solver iterations per solver step: the trade-off grid's second axis
+  Threads,     ///< worker threads; results are identical for any count (runs share the cores)
+};
+
 /// One named backend knob (substeps, Box2D iterations, …).
 struct OptionSpec {
   std::string name;         ///< e.g. "substeps"
@@ -15,6 +23,7 @@ struct OptionSpec {
   double min = 0.0;
   double max = 0.0;
   bool integer = false;  ///< whole numbers only (counts); booleans are integers in [0, 1]
+  OptionRole role = OptionRole::Other;
 };
 
 /// The values of a backend's options. Checks names and ranges, so backends can trust values.
@@ -23,7 +32,10 @@ class OptionSet {
   explicit OptionSet(std::vector<OptionSpec> specs);
 
   std::span<const OptionSpec> specs() const { return specs_; }
+  bool has(std::string_view name) const;
   double value(std::string_view name) const;
+  /// The option playing `role`, if this backend has one.
+  const OptionSpec* withRole(OptionRole role) const;
 
   /// Throws std::invalid_argument naming the option and the reason (unknown name, out of range,
   /// not a whole number, not finite).

@@ -31,25 +31,28 @@ class BackendStep {
   double work_ = 0.0;  // J, done by the forces' kick, booked when the step finishes
 };
 
-/// Drives one backend at a fixed time step: pause and single step, forces from the
-/// interactions, backend switching with nothing lost, counters that survive a switch, and the
-/// energy budget. The GUI and fooball-cli both run scenes through it.
+/// Drives one backend at a fixed time step: forces from the interactions, backend switching
+/// with nothing lost, counters that survive a switch, and the energy budget. A RunGroup holds
+/// one per run; fooball-cli run drives one directly.
 class Simulation {
  public:
   /// `scene` must be valid (validateScene).
   Simulation(const Scene& scene, std::unique_ptr<Backend> backend);
 
-  /// Restarts from `scene`: time, counters and the energy budget start again.
-  void load(const Scene& scene);
+  /// Restarts from `scene` at `startTime` (s): counters and the energy budget start again. A
+  /// run group that makes its runs start identical mid-run keeps its clock going this way.
+  void load(const Scene& scene, double startTime = 0.0);
 
-  /// Continues on `next` from the current state: next.load(current.save()). Time, counters and
-  /// the budget carry on.
+  /// Continues on `next` from the current state: next.load(scene()). Time, counters and the
+  /// budget carry on.
   void setBackend(std::unique_ptr<Backend> next);
   Backend& backend() { return *backend_; }
   const Backend& backend() const { return *backend_; }
 
   /// The current state as a scene (what --save writes).
   Scene scene() const;
+  /// 0xRRGGBB per ball, scene order: drawing only, kept here so backends need not.
+  std::span<const std::uint32_t> colours() const { return colors_; }
 
   /// Gravity changes the potential energy at once; that jump is booked as external work.
   void setWorld(const WorldSettings& world);
@@ -85,12 +88,6 @@ class Simulation {
   /// Runs whole steps for `seconds` of simulated time (rounded to whole steps; none when
   /// `seconds` is not a positive finite number).
   void run(double seconds);
-
-  bool paused = false;
-  /// Real-time driving: adds elapsed·timeScale to an accumulator and runs the whole steps it
-  /// holds (none while paused), at most `maxSteps` (the rest is dropped, so a slow machine
-  /// slows the simulation down instead of spiralling). Returns the steps run.
-  int advance(double elapsedSeconds, double timeScale, int maxSteps);
 
   double time() const { return timeBase_ + static_cast<double>(stepsSinceDtChange_) * dt_; }
   std::uint64_t steps() const { return steps_; }
@@ -130,7 +127,6 @@ class Simulation {
   /// summing dt step by step.
   double timeBase_ = 0.0;
   std::uint64_t stepsSinceDtChange_ = 0;
-  double accumulator_ = 0.0;
   std::uint64_t steps_ = 0;
   BackendCounters earlierBackends_;  ///< counters of backends switched away from
   BackendCounters backendCounters_;  ///< the backend's own, as of the last refreshState()

@@ -12,7 +12,8 @@ namespace fooball::failure_map {
 /// s: the step every sweep runs at, one frame at 60 Hz (the GUI's and `run`'s default).
 inline constexpr double kFrameDt = 1.0 / 60.0;
 
-/// s: the time step of `backend`'s solver, `dt` over its `substeps` option when it has one.
+/// s: the time step of `backend`'s solver, `dt` over its substeps (the option of role
+/// OptionRole::Substeps) when it has them.
 double solverStep(const Backend& backend, double dt);
 
 /// What one run of a scene did, watched after every step.

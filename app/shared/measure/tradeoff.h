@@ -19,9 +19,10 @@ struct TradeoffSetting {
   std::vector<std::string> options;  ///< "KEY=VALUE"
 };
 
-/// The settings `fooball-cli tradeoff` tries: every backend at its defaults, and for a backend
-/// with a `substeps` option 1 … 64 substeps (its solver time step is dt/substeps), times 2, 8
-/// and 32 velocity iterations for one with `velocity_iterations`.
+/// The settings `fooball-cli tradeoff` tries: a backend without substeps at its defaults; one
+/// with an OptionRole::Substeps option at 1 … 64 substeps (its solver time step is dt/substeps),
+/// times 2, 8 and 32 iterations for one with an OptionRole::Iterations option too (Box2D's
+/// velocity_iterations).
 std::vector<TradeoffSetting> tradeoffGrid(std::span<const BackendInfo> backends);
 
 /// "substeps=4 velocity_iterations=8", or "defaults".

@@ -10,10 +10,8 @@
 namespace fooball::failure_map {
 
 double solverStep(const Backend& backend, double dt) {
-  for (const OptionSpec& spec : backend.options().specs()) {
-    if (spec.name == "substeps") return dt / backend.options().value("substeps");
-  }
-  return dt;
+  const OptionSpec* substeps = backend.options().withRole(OptionRole::Substeps);
+  return substeps != nullptr ? dt / backend.options().value(substeps->name) : dt;
 }
 
 RunRecord runScene(const Scene& scene, std::string_view backend, double seconds, double dt) {

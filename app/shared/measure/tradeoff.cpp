@@ -14,13 +14,6 @@ namespace fooball::measure {
 
 namespace {
 
-bool hasOption(const Backend& backend, std::string_view name) {
-  for (const OptionSpec& spec : backend.options().specs()) {
-    if (spec.name == name) return true;
-  }
-  return false;
-}
-
 std::unique_ptr<Backend> configured(const TradeoffSetting& setting) {
   std::unique_ptr<Backend> backend = createBackend(setting.backend);
   for (const std::string& assignment : setting.options)
@@ -139,21 +132,21 @@ std::vector<TradeoffSetting> tradeoffGrid(std::span<const BackendInfo> backends)
   std::vector<TradeoffSetting> grid;
   for (const BackendInfo& info : backends) {
     const auto backend = info.create();
-    if (!hasOption(*backend, "substeps")) {
+    const OptionSpec* substeps = backend->options().withRole(OptionRole::Substeps);
+    if (substeps == nullptr) {
       grid.push_back({std::string(info.name), {}});
       continue;
     }
-    const bool iterations = hasOption(*backend, "velocity_iterations");
-    for (const int substeps : {1, 2, 4, 8, 16, 32, 64}) {
-      const std::string substepsText = "substeps=" + std::to_string(substeps);
-      if (!iterations) {
+    const OptionSpec* iterations = backend->options().withRole(OptionRole::Iterations);
+    for (const int substepCount : {1, 2, 4, 8, 16, 32, 64}) {
+      const std::string substepsText = substeps->name + "=" + std::to_string(substepCount);
+      if (iterations == nullptr) {
         grid.push_back({std::string(info.name), {substepsText}});
         continue;
       }
-      for (const int velocityIterations : {2, 8, 32}) {
-        grid.push_back(
-            {std::string(info.name),
-             {substepsText, "velocity_iterations=" + std::to_string(velocityIterations)}});
+      for (const int iterationCount : {2, 8, 32}) {
+        grid.push_back({std::string(info.name),
+                        {substepsText, iterations->name + "=" + std::to_string(iterationCount)}});
       }
     }
   }

@@ -15,18 +15,11 @@ std::string_view optionName(std::string_view assignment) {
   return assignment.substr(0, assignment.find('='));
 }
 
-bool hasOption(const Backend& backend, std::string_view name) {
-  for (const OptionSpec& spec : backend.options().specs()) {
-    if (spec.name == name) return true;
-  }
-  return false;
-}
-
 /// Applies the options of `assignments` that `backend` has; returns those it took.
 std::vector<std::string> applyOptions(Backend& backend, std::span<const std::string> assignments) {
   std::vector<std::string> taken;
   for (const std::string& assignment : assignments) {
-    if (!hasOption(backend, optionName(assignment))) continue;
+    if (!backend.options().has(optionName(assignment))) continue;
     backend.setOptionFromText(assignment);
     taken.push_back(assignment);
   }
@@ -48,7 +41,7 @@ void checkCapacitySettings(std::span<const BackendInfo> backends,
     bool known = false;
     for (const BackendInfo& info : backends) {
       const auto backend = info.create();
-      if (!hasOption(*backend, optionName(assignment))) continue;
+      if (!backend->options().has(optionName(assignment))) continue;
       known = true;
       try {
         backend->setOptionFromText(assignment);

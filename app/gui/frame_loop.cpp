@@ -1,0 +1,57 @@
+#include "frame_loop.h"
+
+#include <QTimer>
+#include <algorithm>
+
+#include "main_window.h"
+#include "run_controller.h"
+#include "simulation_view.h"
+
+namespace fooball::gui {
+
+namespace {
+
+constexpr int kFrameIntervalMs = 16;      // ~60 frames/s
+constexpr double kMaxFrameSeconds = 0.1;  // a stall longer than this is not caught up
+/// Charts get a sample every few frames: 20 per second at 60 frames/s is smooth, and keeps
+/// the O(N) metrics (overlap search included) off most frames at 100,000 balls.
+constexpr int kFramesPerSample = 3;
+constexpr int kFramesPerReadout = 6;  // compare readout and inspector: 10 per second
+
+}  // namespace
+
+FrameLoop::FrameLoop(MainWindow& window) : QObject(&window), window_(window) {
+  timer_ = new QTimer(this);
+  timer_->setTimerType(Qt::PreciseTimer);
+  timer_->setInterval(kFrameIntervalMs);
+  connect(timer_, &QTimer::timeout, this, [this] {
+    const double elapsed = std::min(double(clock_.nsecsElapsed()) * 1e-9, kMaxFrameSeconds);
+    clock_.restart();
+    advance(elapsed);
+  });
+}
+
+void FrameLoop::advance(double elapsedSeconds) {
+  RunController& runs = window_.runs();
+  const int steps = runs.advance(elapsedSeconds, timeScale_);
+  frameRate_.addFrame(steps);
+  if (steps > 0) {
+    if (++framesSinceSample_ >= kFramesPerSample) {
+      framesSinceSample_ = 0;
+      window_.sampleCharts();
+    }
+    if (++framesSinceReadout_ >= kFramesPerReadout) {
+      framesSinceReadout_ = 0;
+      window_.showDivergence();
+      if (runs.group().selected()) window_.showSelectedBall();
+    }
+  }
+  window_.view()->update();
+}
+
+void FrameLoop::start() {
+  clock_.start();
+  timer_->start();
+}
+
+}  // namespace fooball::gui

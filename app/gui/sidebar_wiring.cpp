@@ -1,0 +1,260 @@
+#include "sidebar_wiring.h"
+
+#include <stdexcept>
+
+#include "ball_inspector.h"
+#include "charts/chart_panel.h"
+#include "fooball/scene_error.h"
+#include "frame_loop.h"
+#include "main_window.h"
+#include "number_format.h"
+#include "run_controller.h"
+#include "run_list_editor.h"
+#include "settings_sidebar.h"
+#include "simulation_view.h"
+#include "status_panel.h"
+#include "window_actions.h"
+
+namespace fooball::gui {
+
+namespace {
+
+constexpr double kDefaultStrength = 10.0;  // 1/s², as Interactions starts
+
+QString modeName(MouseMode mode) {
+  switch (mode) {
+    case MouseMode::Attract:
+      return QObject::tr("attract");
+    case MouseMode::Repel:
+      return QObject::tr("repel");
+    case MouseMode::Grab:
+      return QObject::tr("grab");
+    case MouseMode::Slingshot:
+      return QObject::tr("slingshot");
+  }
+  return {};
+}
+
+/// Changes the world settings of every run; `edit` adjusts a copy of today's.
+template <class Edit>
+void changeWorld(MainWindow& window, Edit&& edit) {
+  WorldSettings world = window.runs().group().world();
+  edit(world);
+  window.runs().change([&](RunGroup& group) { group.setWorld(world); });
+}
+
+void applyGravity(MainWindow& window, double magnitude) {
+  const RunGroup& group = window.runs().group();
+  // Keep the direction gravity has (or had in the scene); straight down when there is none.
+  Vec2 direction{0.0, -1.0};
+  const Vec2 now = group.world().gravity;
+  const Vec2 loaded = group.loadedScene().world.gravity;
+  if (length(now) > 0.0) {
+    direction = now / length(now);
+  } else if (length(loaded) > 0.0) {
+    direction = loaded / length(loaded);
+  }
+  changeWorld(window, [&](WorldSettings& world) { world.gravity = magnitude * direction; });
+  window.markChange(QObject::tr("gravity %1 m/s²").arg(formatNumber(magnitude)));
+}
+
+/// A new run; every run restarts from run 0's state (RunController::runsRestarted marks it).
+void addRun(MainWindow& window, const RunSpec& spec) {
+  RunController& runs = window.runs();
+  const bool wasComparing = runs.comparing();
+  try {
+    runs.addRun(spec);
+  } catch (const std::invalid_argument& error) {
+    window.showStatus(QString::fromStdString(error.what()));
+    return;
+  }
+  window.charts()->addRun(runs.labels().back());
+  if (!wasComparing) runs.setBaseline(true);  // compare mode shows chaos unless hidden
+  window.charts()->setBaselineShown(runs.group().hasBaseline());
+  window.sampleCharts();
+  window.showRuns();
+}
+
+void removeRun(MainWindow& window, int index) {
+  if (window.runs().runCount() < 2) return;
+  window.runs().removeRun(index);
+  window.charts()->removeRun(index);
+  window.markChange(QObject::tr("run %1 removed").arg(index));
+}
+
+/// Run `index` continues on `backend` (its default options) from its own state.
+void setRunBackend(MainWindow& window, int index, const QString& backend) {
+  RunController& runs = window.runs();
+  if (backend.toStdString() == runs.group().spec(std::size_t(index)).backend) return;
+  try {
+    runs.setRunSpec(index, RunSpec{backend.toStdString(), {}});
+  } catch (const std::invalid_argument& error) {
+    window.showStatus(QString::fromStdString(error.what()));
+    window.showRuns();
+    return;
+  }
+  window.charts()->renameRun(index, runs.label(index));
+  window.markChange(QObject::tr("run %1 → %2").arg(index).arg(backend));
+}
+
+void wireRunList(MainWindow& window) {
+  RunListEditor* list = window.sidebar()->runList();
+  QObject::connect(list, &RunListEditor::backendChosen, &window,
+                   [&window](int run, const QString& name) { setRunBackend(window, run, name); });
+  QObject::connect(list, &RunListEditor::addRunRequested, &window, [&window](const QString& name) {
+    addRun(window, RunSpec{name.toStdString(), {}});
+  });
+  QObject::connect(list, &RunListEditor::removeRunRequested, &window,
+                   [&window](int run) { removeRun(window, run); });
+  QObject::connect(list, &RunListEditor::optionChanged, &window,
+                   [&window](int run, const QString& name, double value) {
+                     try {
+                       window.runs().setBackendOption(run, name, value);
+                       window.charts()->renameRun(run, window.runs().label(run));
+                       window.markChange(QStringLiteral("%1 = %2").arg(name, formatNumber(value)));
+                     } catch (const std::invalid_argument& error) {
+                       window.showStatus(QString::fromStdString(error.what()));
+                       window.sidebar()->runList()->showRuns(window.runs().group());
+                     }
+                   });
+  QObject::connect(list, &RunListEditor::baselineToggled, &window, [&window](bool on) {
+    window.runs().setBaseline(on);
+    window.charts()->setBaselineShown(on);
+    window.sampleCharts();
+    window.markChange(on ? QObject::tr("baseline on") : QObject::tr("baseline off"));
+  });
+  QObject::connect(list, &RunListEditor::compareLayoutChosen, &window,
+                   [&window](CompareLayout layout) {
+                     WindowActions& actions = window.actions();
+                     (layout == CompareLayout::Overlay ? actions.overlay() : actions.sideBySide())
+                         ->setChecked(true);
+                     window.view()->setCompareLayout(layout);
+                   });
+}
+
+void wireInspector(MainWindow& window) {
+  BallInspector* inspector = window.sidebar()->inspector();
+  QObject::connect(inspector, &BallInspector::ballEdited, &window,
+                   [&window](std::size_t index, const BallDef& ball) {
+                     try {
+                       window.runs().setBall(index, ball);
+                       window.markChange(QObject::tr("ball #%1 edited").arg(index));
+                     } catch (const SceneError& error) {
+                       const QString message = QString::fromStdString(error.what());
+                       BallInspector* shown = window.sidebar()->inspector();
+                       shown->showBall(index, window.runs().group().ball(index), true);
+                       shown->showError(message);
+                       window.showStatus(message);
+                     }
+                     window.showSelectedBall();
+                     window.view()->update();
+                   });
+  QObject::connect(inspector, &BallInspector::deleteRequested, &window,
+                   [&window](std::size_t index) {
+                     window.runs().deleteBall(index);
+                     window.markChange(QObject::tr("ball #%1 deleted").arg(index));
+                   });
+}
+
+}  // namespace
+
+void wireSidebar(MainWindow& window) {
+  SettingsSidebar* s = window.sidebar();
+  MainWindow* w = &window;
+  QObject::connect(s, &SettingsSidebar::presetChosen, w, &MainWindow::openPreset);
+  QObject::connect(s, &SettingsSidebar::ballCountChosen, w,
+                   [w](int count) { w->setBallCount(static_cast<std::size_t>(count)); });
+  QObject::connect(s, &SettingsSidebar::restartRequested, w, &MainWindow::restart);
+  QObject::connect(s, &SettingsSidebar::resetSceneRequested, w, &MainWindow::resetScene);
+
+  QObject::connect(s, &SettingsSidebar::gravityChosen, w,
+                   [w](double magnitude) { applyGravity(*w, magnitude); });
+  QObject::connect(s, &SettingsSidebar::airResistanceChosen, w, [w](double coefficient) {
+    changeWorld(*w, [&](WorldSettings& world) { world.airResistance = coefficient; });
+    w->markChange(QObject::tr("air resistance %1 1/s").arg(formatNumber(coefficient)));
+  });
+  QObject::connect(s, &SettingsSidebar::strengthChosen, w, [w](double strength) {
+    w->runs().changeTools([&](RunGroup& group) { group.setStrength(strength); });
+    w->markChange(QObject::tr("mouse strength %1").arg(formatNumber(strength)));
+  });
+  QObject::connect(s, &SettingsSidebar::timeScaleChosen, w, [w](double timeScale) {
+    w->frames().setTimeScale(timeScale);
+    w->markChange(QObject::tr("speed %1×").arg(formatNumber(timeScale)));
+  });
+  QObject::connect(s, &SettingsSidebar::resetSlidersRequested, w, [w] { resetSliders(*w); });
+  QObject::connect(s, &SettingsSidebar::ballCollisionsToggled, w, [w](bool on) {
+    changeWorld(*w, [&](WorldSettings& world) { world.ballCollisions = on; });
+    w->markChange(on ? QObject::tr("collisions on") : QObject::tr("collisions off"));
+  });
+  QObject::connect(s, &SettingsSidebar::wallsToggled, w, [w](bool on) {
+    changeWorld(*w, [&](WorldSettings& world) { world.walls = Walls{on, on, on, on}; });
+    w->markChange(on ? QObject::tr("walls on") : QObject::tr("walls off"));
+    w->view()->update();
+  });
+
+  QObject::connect(s, &SettingsSidebar::mouseModeChosen, w, [w](MouseMode mode) {
+    w->runs().changeTools([&](RunGroup& group) { group.setMouseMode(mode); });
+  });
+  QObject::connect(s, &SettingsSidebar::scopeChosen, w, [w](Scope scope) {
+    w->runs().changeTools([&](RunGroup& group) { group.setScope(scope); });
+  });
+  QObject::connect(s, &SettingsSidebar::clearAttractorsRequested, w, [w] { clearAttractors(*w); });
+
+  // The drawing check boxes and the View menu's actions mirror each other.
+  const WindowActions& actions = window.actions();
+  QObject::connect(s, &SettingsSidebar::temperatureToggled, actions.temperature(),
+                   &QAction::setChecked);
+  QObject::connect(s, &SettingsSidebar::tethersToggled, actions.tethers(), &QAction::setChecked);
+  QObject::connect(s, &SettingsSidebar::velocityVectorsToggled, actions.velocityVectors(),
+                   &QAction::setChecked);
+  QObject::connect(s, &SettingsSidebar::centreOfMassToggled, actions.centreOfMass(),
+                   &QAction::setChecked);
+  wireRunList(window);
+  wireInspector(window);
+}
+
+void wireView(MainWindow& window) {
+  SimulationView* view = window.view();
+  MainWindow* w = &window;
+  QObject::connect(view, &SimulationView::toolPressed, w, [w](Vec2 point) {
+    w->runs().changeTools([&](RunGroup& group) { group.pressTool(point); });
+    w->markChange(modeName(w->runs().group().interactions().mode));
+  });
+  QObject::connect(view, &SimulationView::toolMoved, w, [w](Vec2 point) {
+    w->runs().changeTools([&](RunGroup& group) { group.moveTool(point); });
+  });
+  QObject::connect(view, &SimulationView::toolReleased, w, [w](Vec2 point) {
+    w->runs().changeTools([&](RunGroup& group) { group.releaseTool(point); });
+  });
+  QObject::connect(view, &SimulationView::attractorPlaced, w, [w](Vec2 point) {
+    w->runs().changeTools([&](RunGroup& group) { group.addAttractor(point); });
+    w->sidebar()->showAttractorCount(w->runs().group().interactions().attractors().size());
+    w->markChange(QObject::tr("attractor"));
+  });
+  QObject::connect(view, &SimulationView::ballClicked, &window.runs(), &RunController::setSelected);
+  QObject::connect(view, &SimulationView::cursorMoved, w,
+                   [w](Vec2 point) { w->status().showCursor(point.x, point.y); });
+}
+
+void resetSliders(MainWindow& window) {
+  const Scene& loaded = window.runs().group().loadedScene();
+  changeWorld(window, [&](WorldSettings& world) {
+    world.gravity = loaded.world.gravity;
+    world.airResistance = loaded.world.airResistance;
+  });
+  window.runs().changeTools([](RunGroup& group) { group.setStrength(kDefaultStrength); });
+  window.frames().setTimeScale(FrameLoop::kDefaultTimeScale);
+  SettingsSidebar* sidebar = window.sidebar();
+  sidebar->showWorld(window.runs().group().world());
+  sidebar->showStrength(kDefaultStrength);
+  sidebar->showTimeScale(FrameLoop::kDefaultTimeScale);
+  window.markChange(QObject::tr("sliders reset"));
+}
+
+void clearAttractors(MainWindow& window) {
+  window.runs().changeTools([](RunGroup& group) { group.clearAttractors(); });
+  window.sidebar()->showAttractorCount(0);
+  window.view()->update();
+}
+
+}  // namespace fooball::gui

@@ -1,0 +1,210 @@
+#include "window_actions.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QMenuBar>
+
+#include "benchmark_dialog.h"
+#include "charts/chart_panel.h"
+#include "help_dialogs.h"
+#include "main_window.h"
+#include "run_controller.h"
+#include "run_list_editor.h"
+#include "settings_sidebar.h"
+#include "sidebar_wiring.h"
+#include "simulation_view.h"
+
+namespace fooball::gui {
+
+WindowActions::WindowActions(MainWindow& window) : QObject(&window), window_(window) {
+  createActions();
+  createMenus();
+}
+
+void WindowActions::createActions() {
+  pause_ = new QAction(tr("&Pause"), this);
+  pause_->setCheckable(true);
+  pause_->setShortcut(Qt::Key_Space);
+  pause_->setToolTip(tr("Pause or continue every run (Space)"));
+  connect(pause_, &QAction::toggled, &window_.runs(), &RunController::setPaused);
+
+  step_ = new QAction(tr("Single &step"), this);
+  step_->setShortcut(Qt::Key_Period);
+  step_->setToolTip(tr("One physics step of every run while paused (.)"));
+  step_->setEnabled(false);
+  connect(step_, &QAction::triggered, this, [this] {
+    window_.runs().stepOnce();
+    window_.sampleCharts();
+    window_.showDivergence();
+    window_.showSelectedBall();
+    window_.view()->update();
+    window_.updateStatusBar();
+  });
+
+  SimulationView* view = window_.view();
+  const auto drawingAction = [this, view](const QString& text, const QKeySequence& shortcut,
+                                          void (SimulationView::*setter)(bool)) {
+    auto* action = new QAction(text, this);
+    action->setCheckable(true);
+    action->setShortcut(shortcut);
+    connect(action, &QAction::toggled, view, setter);
+    connect(action, &QAction::toggled, this, [this, view] {
+      window_.sidebar()->showDrawing(view->temperatureColouring(), view->tethers(),
+                                     view->velocityVectors(), view->centreOfMass());
+    });
+    return action;
+  };
+  temperature_ = drawingAction(tr("&Temperature colouring"), QKeySequence(tr("Ctrl+T")),
+                               &SimulationView::setTemperatureColouring);
+  tethers_ = drawingAction(tr("Te&thers"), QKeySequence(tr("Ctrl+L")), &SimulationView::setTethers);
+  velocityVectors_ = drawingAction(tr("&Velocity vectors"), QKeySequence(tr("Ctrl+Shift+V")),
+                                   &SimulationView::setVelocityVectors);
+  centreOfMass_ = drawingAction(tr("&Centre of mass"), QKeySequence(tr("Ctrl+M")),
+                                &SimulationView::setCentreOfMass);
+  tethers_->setChecked(true);
+
+  auto* layoutGroup = new QActionGroup(this);
+  overlay_ = new QAction(tr("Compare: &overlay"), layoutGroup);
+  sideBySide_ = new QAction(tr("Compare: side &by side"), layoutGroup);
+  overlay_->setCheckable(true);
+  sideBySide_->setCheckable(true);
+  overlay_->setChecked(true);
+  sideBySide_->setShortcut(QKeySequence(tr("Ctrl+Shift+B")));
+  const auto useLayout = [this](CompareLayout layout) {
+    window_.view()->setCompareLayout(layout);
+    window_.sidebar()->runList()->showCompareLayout(layout);
+  };
+  connect(overlay_, &QAction::triggered, this, [useLayout] { useLayout(CompareLayout::Overlay); });
+  connect(sideBySide_, &QAction::triggered, this,
+          [useLayout] { useLayout(CompareLayout::SideBySide); });
+}
+
+void WindowActions::createMenus() {
+  QMenuBar* bar = window_.menuBar();
+  QMenu* file = bar->addMenu(tr("&File"));
+  file->addAction(tr("&Open scene…"), QKeySequence::Open, this, &WindowActions::openSceneDialog);
+  file->addAction(tr("&Save scene as…"), QKeySequence::Save, this, &WindowActions::saveSceneDialog);
+  file->addSeparator();
+  file->addAction(tr("Export charts as &PNG…"), QKeySequence(tr("Ctrl+E")), this,
+                  &WindowActions::exportChartsPng);
+  file->addAction(tr("Export charts as &CSV…"), QKeySequence(tr("Ctrl+Shift+E")), this,
+                  &WindowActions::exportChartsCsv);
+  file->addSeparator();
+  file->addAction(tr("&Quit"), QKeySequence::Quit, &window_, &QWidget::close);
+
+  QMenu* simulation = bar->addMenu(tr("&Simulation"));
+  simulation->addAction(pause_);
+  simulation->addAction(step_);
+  simulation->addSeparator();
+  simulation->addAction(tr("&Restart"), QKeySequence(tr("Ctrl+R")), &window_, &MainWindow::restart);
+  simulation->addAction(tr("Rese&t scene"), QKeySequence(tr("Ctrl+Shift+R")), &window_,
+                        &MainWindow::resetScene);
+  simulation->addAction(tr("Reset s&liders"), this, [this] { resetSliders(window_); });
+  simulation->addAction(tr("&Clear attractors"), QKeySequence(tr("Ctrl+Backspace")), this,
+                        [this] { clearAttractors(window_); });
+
+  QMenu* viewMenu = bar->addMenu(tr("&View"));
+  QAction* sidebarToggle = window_.sidebarDock()->toggleViewAction();
+  sidebarToggle->setShortcut(QKeySequence(tr("Ctrl+1")));
+  QAction* chartsToggle = window_.chartsDock()->toggleViewAction();
+  chartsToggle->setShortcut(QKeySequence(tr("Ctrl+2")));
+  viewMenu->addActions({sidebarToggle, chartsToggle});
+  viewMenu->addSeparator();
+  viewMenu->addActions({temperature_, tethers_, velocityVectors_, centreOfMass_});
+  viewMenu->addSeparator();
+  viewMenu->addActions({overlay_, sideBySide_});
+
+  QMenu* tools = bar->addMenu(tr("&Tools"));
+  benchmark_ = tools->addAction(tr("&Benchmark…"), this, &WindowActions::openBenchmark);
+  benchmark_->setToolTip(
+      tr("Measure how many balls each backend steps within a time budget (fooball-cli capacity)"));
+
+  QMenu* help = bar->addMenu(tr("&Help"));
+  help->addAction(tr("&Mouse and keys"), QKeySequence::HelpContents, this,
+                  [this] { showMouseAndKeys(&window_); });
+  help->addAction(tr("&About FooBall"), this, [this] { showAbout(&window_); });
+  help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+
+  for (QMenu* menu : {file, simulation, viewMenu, tools, help})
+    menu->setToolTipsVisible(true);
+}
+
+void WindowActions::applyShowOptions(const QStringList& show) {
+  if (show.contains(QStringLiteral("temperature"))) temperature_->setChecked(true);
+  if (show.contains(QStringLiteral("vectors"))) velocityVectors_->setChecked(true);
+  if (show.contains(QStringLiteral("centre-of-mass"))) centreOfMass_->setChecked(true);
+  if (show.contains(QStringLiteral("side-by-side"))) sideBySide_->trigger();
+}
+
+void WindowActions::showPaused(bool paused) {
+  pause_->setChecked(paused);
+  pause_->setText(paused ? tr("&Continue") : tr("&Pause"));
+  step_->setEnabled(paused);
+}
+
+void WindowActions::openSceneDialog() {
+  const QString path = QFileDialog::getOpenFileName(&window_, tr("Open scene"), QString(),
+                                                    tr("FooBall scenes (*.json);;All files (*)"));
+  if (!path.isEmpty()) window_.openSceneFile(path);
+}
+
+void WindowActions::saveSceneDialog() {
+  const QString path = QFileDialog::getSaveFileName(&window_, tr("Save scene"), QString(),
+                                                    tr("FooBall scenes (*.json)"));
+  if (!path.isEmpty()) window_.saveSceneFile(path);
+}
+
+void WindowActions::exportChartsPng() {
+  const QString path = QFileDialog::getSaveFileName(&window_, tr("Export charts as PNG"), QString(),
+                                                    tr("PNG images (*.png)"));
+  if (path.isEmpty()) return;
+  if (window_.charts()->exportPng(path)) {
+    window_.showStatus(tr("Charts saved to %1").arg(path));
+  } else {
+    window_.reportError(tr("Could not export the charts"), tr("Could not write %1").arg(path));
+  }
+}
+
+void WindowActions::exportChartsCsv() {
+  const QString path = QFileDialog::getSaveFileName(&window_, tr("Export charts as CSV"), QString(),
+                                                    tr("CSV files (*.csv)"));
+  if (path.isEmpty()) return;
+  if (window_.charts()->exportCsv(path)) {
+    window_.showStatus(tr("Chart data saved to %1").arg(path));
+  } else {
+    window_.reportError(tr("Could not export the chart data"), tr("Could not write %1").arg(path));
+  }
+}
+
+void WindowActions::openBenchmark() {
+  if (!benchmarkDialog_) {
+    benchmarkDialog_ = new BenchmarkDialog(&window_);
+    // The measurements and the simulation would share the CPU: the runs pause meanwhile.
+    connect(benchmarkDialog_, &BenchmarkDialog::runStarted, this, [this] {
+      pausedForBenchmark_ = !window_.runs().paused();
+      if (pausedForBenchmark_) window_.runs().setPaused(true);
+      window_.showStatus(tr("Paused while the benchmark runs"));
+    });
+    connect(benchmarkDialog_, &BenchmarkDialog::runFinished, this, [this] {
+      if (pausedForBenchmark_) window_.runs().setPaused(false);
+      pausedForBenchmark_ = false;
+    });
+  }
+  benchmarkDialog_->show();
+  benchmarkDialog_->raise();
+  benchmarkDialog_->activateWindow();
+}
+
+void WindowActions::closeBenchmark() {
+  if (benchmarkDialog_) benchmarkDialog_->close();
+}
+
+void WindowActions::destroyBenchmark() {
+  delete benchmarkDialog_;
+  benchmarkDialog_ = nullptr;
+}
+
+}  // namespace fooball::gui

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <QObject>
+#include <QStringList>
+
+class QAction;
+
+namespace fooball::gui {
+
+class BenchmarkDialog;
+class MainWindow;
+
+/// The window's menus and the actions in them: File (scenes, chart export), Simulation (pause,
+/// single step, restart, resets), View (docks, drawing options, compare layout), Tools
+/// (Benchmark) and Help. The drawing actions and the sidebar's check boxes mirror each other.
+class WindowActions : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit WindowActions(MainWindow& window);
+
+  QAction* pause() const { return pause_; }
+  QAction* step() const { return step_; }
+  QAction* temperature() const { return temperature_; }
+  QAction* tethers() const { return tethers_; }
+  QAction* velocityVectors() const { return velocityVectors_; }
+  QAction* centreOfMass() const { return centreOfMass_; }
+  QAction* overlay() const { return overlay_; }
+  QAction* sideBySide() const { return sideBySide_; }
+  QAction* benchmark() const { return benchmark_; }
+  /// Tools → Benchmark's dialog; none until first opened.
+  BenchmarkDialog* benchmarkDialog() const { return benchmarkDialog_; }
+
+  /// Turns on the drawing options --show names ("temperature", "vectors", "centre-of-mass",
+  /// "side-by-side").
+  void applyShowOptions(const QStringList& show);
+  void showPaused(bool paused);
+  /// Cancels a benchmark run and closes its dialog (the app quits with its main window).
+  void closeBenchmark();
+  /// Deletes the dialog, which stops and joins its thread (before the window's widgets go).
+  void destroyBenchmark();
+
+ private:
+  void createActions();
+  void createMenus();
+  void openSceneDialog();
+  void saveSceneDialog();
+  void exportChartsPng();
+  void exportChartsCsv();
+  void openBenchmark();
+
+  MainWindow& window_;
+  QAction* pause_ = nullptr;
+  QAction* step_ = nullptr;
+  QAction* temperature_ = nullptr;
+  QAction* tethers_ = nullptr;
+  QAction* velocityVectors_ = nullptr;
+  QAction* centreOfMass_ = nullptr;
+  QAction* overlay_ = nullptr;
+  QAction* sideBySide_ = nullptr;
+  QAction* benchmark_ = nullptr;
+  BenchmarkDialog* benchmarkDialog_ = nullptr;
+  bool pausedForBenchmark_ = false;  ///< the benchmark paused the runs and continues them
+};
+
+}  // namespace fooball::gui

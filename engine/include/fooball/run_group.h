@@ -1,0 +1,186 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fooball/divergence.h"
+#include "fooball/run_spec.h"
+#include "fooball/simulation.h"
+
+namespace fooball {
+
+/// 1 to kMaxRuns runs of one scene in lockstep (DESIGN.md, "Runs, run specs and run groups"):
+/// the same start state, the same dt, the same tool forces and edits, the same number of steps.
+/// Run 0 is the reference every other run's divergence is measured from.
+///
+/// The group owns what the runs have in common — the loaded scene, world settings, the mouse
+/// tools (each run keeps only its own grab target, since its balls are elsewhere), edits and
+/// ball-count changes, the ball colours, the real-time clock and the cores — so a front end
+/// (the app, fooball-cli compare) only says what the user did. Optionally it keeps a chaos
+/// baseline: a hidden copy of run 0 whose balls start kBaselineDisplacement away, in seeded
+/// random directions. Its divergence from run 0 shows how fast any difference at all grows in
+/// this scene; a method whose divergence follows it is as close as chaos allows.
+class RunGroup {
+ public:
+  static constexpr std::size_t kMaxRuns = 8;
+  /// m: how far the baseline's balls start from run 0's. Far below any method's error per step
+  /// (elastic's overlap resolution, Box2D's float state at 1e-7 relative), far above rounding
+  /// of positions of order 1–100 m (1e-14).
+  static constexpr double kBaselineDisplacement = 1e-9;
+  static constexpr std::uint64_t kBaselineSeed = 0x5eed;
+
+  /// `scene` must be valid (validateScene). Throws std::invalid_argument naming a bad spec, or
+  /// when there are no specs or more than kMaxRuns.
+  RunGroup(const Scene& scene, const std::vector<RunSpec>& specs, BackendFactory factory);
+  ~RunGroup();
+  RunGroup(const RunGroup&) = delete;
+  RunGroup& operator=(const RunGroup&) = delete;
+
+  // --- The runs -------------------------------------------------------------------------
+  std::size_t runCount() const { return runs_.size(); }
+  const Simulation& run(std::size_t index) const { return *runs_.at(index).simulation; }
+  /// The run's spec as given, with the options set since (its label is spec().text()).
+  const RunSpec& spec(std::size_t index) const { return runs_.at(index).spec; }
+  std::vector<std::string> labels() const;
+
+  /// Adds a run of `spec` and restarts every run from run 0's state now, so that all start
+  /// identical; time carries on (synchronise()). Throws std::invalid_argument for a bad spec or
+  /// a ninth run; nothing changes then.
+  void addRun(const RunSpec& spec);
+  /// Removes run `index` while another is left; the others carry on (removing run 0 makes run 1
+  /// the reference, and the baseline follows it).
+  void removeRun(std::size_t index);
+  /// Continues run `index` on the backend and options of `spec`, from its own state (time and
+  /// counters carry on). Throws std::invalid_argument for a bad spec; nothing changes then.
+  void setSpec(std::size_t index, const RunSpec& spec);
+  /// Sets one option of run `index`'s backend and records it in its spec. Throws
+  /// std::invalid_argument naming the problem.
+  void setOption(std::size_t index, std::string_view name, double value);
+  /// Restarts every run (and the baseline) from run 0's state now: same balls in every run;
+  /// time carries on, counters and energy budgets start again.
+  void synchronise();
+
+  /// Options with OptionRole::Threads get `cores` shared among the runs (at least 1 each). The
+  /// stepping thread waits for every step anyway, and results are the same for any count.
+  void shareCores(int cores);
+
+  // --- Divergence and the chaos baseline --------------------------------------------------
+  /// Zero for run 0.
+  Divergence divergence(std::size_t index) const;
+  /// Starts the baseline from run 0's state now (displaced), or drops it.
+  void setBaseline(bool on);
+  bool hasBaseline() const { return baseline_ != nullptr; }
+  /// nullptr without a baseline.
+  const Simulation* baseline() const { return baseline_.get(); }
+  std::optional<Divergence> baselineDivergence() const;
+
+  // --- The scene ----------------------------------------------------------------------------
+  /// The scene Restart and Reset go back to.
+  const Scene& loadedScene() const { return loadedScene_; }
+  /// Every run starts on `scene` (valid) at t = 0; attractors and the selection go.
+  void load(const Scene& scene);
+  /// Back to the loaded scene at t = 0, keeping the world settings and attractors of now.
+  void restart();
+  /// Run 0's state as a scene (what File → Save writes).
+  Scene scene() const { return run(0).scene(); }
+
+  const WorldSettings& world() const { return run(0).world(); }
+  void setWorld(const WorldSettings& world);
+  std::size_t ballCount() const { return run(0).ballCount(); }
+  /// 0xRRGGBB per ball, the same in every run.
+  std::span<const std::uint32_t> colours() const { return run(0).colours(); }
+  /// Ball `index` as run 0 has it.
+  BallDef ball(std::size_t index) const;
+
+  /// Adds balls where there is room in every run (placeNewBalls), or removes the newest.
+  /// Throws SceneError when they do not fit; nothing changes then.
+  void setBallCount(std::size_t count);
+  /// The size of the balls the last setBallCount() added relative to those there (1: same).
+  double newBallScale() const { return newBallScale_; }
+  /// Replaces ball `index` in every run, or throws SceneError and changes none.
+  void setBall(std::size_t index, const BallDef& ball);
+  void deleteBall(std::size_t index);
+
+  // --- Mouse tools (the same in every run) -------------------------------------------------
+  /// The tool settings and attractors, as every run has them (run 0's object).
+  const Interactions& interactions() const { return run(0).interactions; }
+  void setMouseMode(MouseMode mode);
+  void setScope(Scope scope);
+  void setStrength(double strength);
+  std::optional<std::size_t> selected() const { return interactions().selected; }
+  void setSelected(std::optional<std::size_t> index);
+  /// A press picks each run's own target among its own balls.
+  void pressTool(Vec2 point);
+  void moveTool(Vec2 point);
+  void releaseTool(Vec2 point);
+  void addAttractor(Vec2 point);
+  void clearAttractors();
+
+  // --- Stepping -------------------------------------------------------------------------------
+  double time() const { return run(0).time(); }
+  std::uint64_t steps() const { return run(0).steps(); }
+  double dt() const { return run(0).dt(); }
+  void setDt(double dt);
+
+  /// One step of every run and the baseline, one after another on this thread.
+  void step();
+  /// Whole steps for `seconds` of simulated time (rounded; none unless positive and finite).
+  void runFor(double seconds);
+
+  /// The steps of one lockstep step, for a driver that runs them on threads of its own: one per
+  /// run, then the baseline's. `steps` is caller-owned so that stepping allocates nothing.
+  /// While they are out (stepping()), everything but the backends stays readable.
+  void beginSteps(std::vector<BackendStep>& steps);
+  /// Takes them back, all at once, in the order beginSteps() gave them.
+  void finishSteps(std::vector<BackendStep>& steps);
+  /// Gives the steps that are out up for good: every run continues from the state before them
+  /// on a fresh backend of its spec. Whoever runs the old ones should requestStop() them.
+  void abandonSteps();
+  bool stepping() const { return stepping_; }
+
+  /// Real-time driving: pauses, and turns elapsed real time into whole steps.
+  bool paused() const { return paused_; }
+  void setPaused(bool paused);
+  /// The whole steps `elapsedSeconds`·`timeScale` of real time holds now (none while paused),
+  /// at most kMaxStepsPerFramePerTimeScale·timeScale (at least 1): a machine that cannot keep
+  /// up drops the backlog and slows the simulation down instead of spiralling. The caller runs
+  /// them (step() or beginSteps()).
+  int takeDueSteps(double elapsedSeconds, double timeScale);
+  /// Forgets time not yet stepped, e.g. after a slow step.
+  void dropBacklog() { accumulator_ = 0.0; }
+  static constexpr double kMaxStepsPerFramePerTimeScale = 4.0;
+
+ private:
+  struct Run {
+    RunSpec spec;
+    std::unique_ptr<Simulation> simulation;
+  };
+
+  std::unique_ptr<Backend> makeBackend(const RunSpec& spec) const;
+  std::unique_ptr<Simulation> makeSimulation(const Scene& scene, const RunSpec& spec) const;
+  /// Run 0's state with every ball moved kBaselineDisplacement in a seeded random direction.
+  Scene displacedScene() const;
+  /// Every run and the baseline, in stepping order.
+  template <class Action>
+  void forEachSimulation(Action&& action);
+  void copyToolsTo(Simulation& simulation) const;
+  void applyCores(Backend& backend) const;
+  std::size_t stepperCount() const { return runs_.size() + (baseline_ ? 1 : 0); }
+
+  BackendFactory factory_;
+  Scene loadedScene_;
+  std::vector<Run> runs_;
+  std::unique_ptr<Simulation> baseline_;
+  int cores_ = 1;
+  bool stepping_ = false;
+  bool paused_ = false;
+  double accumulator_ = 0.0;  ///< s of simulated time not yet stepped
+  double newBallScale_ = 1.0;
+};
+
+}  // namespace fooball

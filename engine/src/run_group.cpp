@@ -1,0 +1,333 @@
+#include "fooball/run_group.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "fooball/ball_placement.h"
+#include "fooball/scene_error.h"
+#include "fooball/split_mix64.h"
+
+namespace fooball {
+
+RunGroup::RunGroup(const Scene& scene, const std::vector<RunSpec>& specs, BackendFactory factory)
+    : factory_(factory), loadedScene_(scene) {
+  if (specs.empty() || specs.size() > kMaxRuns) {
+    throw std::invalid_argument("a run group holds 1 to " + std::to_string(kMaxRuns) +
+                                " runs (got " + std::to_string(specs.size()) + ")");
+  }
+  for (const RunSpec& spec : specs)
+    runs_.push_back({spec, makeSimulation(scene, spec)});
+}
+
+RunGroup::~RunGroup() = default;
+
+std::unique_ptr<Backend> RunGroup::makeBackend(const RunSpec& spec) const {
+  std::unique_ptr<Backend> backend = factory_(spec);
+  applyCores(*backend);
+  return backend;
+}
+
+std::unique_ptr<Simulation> RunGroup::makeSimulation(const Scene& scene,
+                                                     const RunSpec& spec) const {
+  auto simulation = std::make_unique<Simulation>(scene, makeBackend(spec));
+  if (!runs_.empty()) {
+    simulation->setDt(dt());
+    copyToolsTo(*simulation);
+  }
+  return simulation;
+}
+
+void RunGroup::copyToolsTo(Simulation& simulation) const {
+  const Interactions& tools = interactions();
+  simulation.interactions.mode = tools.mode;
+  simulation.interactions.scope = tools.scope;
+  simulation.interactions.strength = tools.strength;
+  simulation.interactions.selected = tools.selected;
+  simulation.interactions.clearAttractors();
+  for (const Vec2 attractor : tools.attractors())
+    simulation.interactions.addAttractor(attractor);
+}
+
+template <class Action>
+void RunGroup::forEachSimulation(Action&& action) {
+  for (Run& run : runs_)
+    action(*run.simulation);
+  if (baseline_) action(*baseline_);
+}
+
+std::vector<std::string> RunGroup::labels() const {
+  std::vector<std::string> labels;
+  for (const Run& run : runs_)
+    labels.push_back(run.spec.text());
+  return labels;
+}
+
+void RunGroup::addRun(const RunSpec& spec) {
+  if (runs_.size() == kMaxRuns) {
+    throw std::invalid_argument("run spec '" + spec.text() + "': a run group holds at most " +
+                                std::to_string(kMaxRuns) + " runs");
+  }
+  runs_.push_back({spec, makeSimulation(scene(), spec)});
+  shareCores(cores_);
+  synchronise();
+}
+
+void RunGroup::removeRun(std::size_t index) {
+  if (runs_.size() < 2 || index >= runs_.size()) return;
+  runs_.erase(runs_.begin() + static_cast<std::ptrdiff_t>(index));
+  if (index == 0 && baseline_) setBaseline(true);  // the baseline follows the new reference
+  shareCores(cores_);
+}
+
+void RunGroup::setSpec(std::size_t index, const RunSpec& spec) {
+  Run& run = runs_.at(index);
+  run.simulation->setBackend(makeBackend(spec));
+  run.spec = spec;
+  if (index == 0 && baseline_) setBaseline(true);  // a copy of run 0 has run 0's method
+}
+
+void RunGroup::setOption(std::size_t index, std::string_view name, double value) {
+  Run& run = runs_.at(index);
+  run.simulation->backend().setOption(name, value);
+  run.spec.set(name, value);
+  if (index == 0 && baseline_) baseline_->backend().setOption(name, value);
+}
+
+void RunGroup::synchronise() {
+  const Scene now = scene();
+  const double clock = time();
+  for (Run& run : runs_)
+    run.simulation->load(now, clock);
+  if (baseline_) setBaseline(true);
+}
+
+void RunGroup::shareCores(int cores) {
+  cores_ = std::max(1, cores);
+  forEachSimulation([&](Simulation& simulation) { applyCores(simulation.backend()); });
+}
+
+void RunGroup::applyCores(Backend& backend) const {
+  const OptionSpec* threads = backend.options().withRole(OptionRole::Threads);
+  if (!threads) return;
+  const double perRun = std::max(1.0, std::floor(double(cores_) / double(stepperCount())));
+  backend.setOption(threads->name, std::clamp(perRun, threads->min, threads->max));
+}
+
+Divergence RunGroup::divergence(std::size_t index) const {
+  return measureDivergence(run(0), run(index));
+}
+
+Scene RunGroup::displacedScene() const {
+  Scene displaced = scene();
+  SplitMix64 random(kBaselineSeed);
+  for (BallDef& ball : displaced.balls) {
+    const double angle = random.between(0.0, 2.0 * std::numbers::pi);
+    ball.position += kBaselineDisplacement * Vec2{std::cos(angle), std::sin(angle)};
+  }
+  return displaced;
+}
+
+void RunGroup::setBaseline(bool on) {
+  if (!on) {
+    baseline_.reset();
+  } else {
+    const Scene displaced = displacedScene();
+    baseline_ = makeSimulation(displaced, runs_.front().spec);
+    baseline_->load(displaced, time());  // on run 0's clock
+  }
+  shareCores(cores_);
+}
+
+std::optional<Divergence> RunGroup::baselineDivergence() const {
+  if (!baseline_) return std::nullopt;
+  return measureDivergence(run(0), *baseline_);
+}
+
+void RunGroup::load(const Scene& scene) {
+  loadedScene_ = scene;
+  forEachSimulation([&](Simulation& simulation) {
+    simulation.interactions.clearAttractors();
+    simulation.interactions.selected.reset();
+    simulation.load(scene);
+  });
+  if (baseline_) setBaseline(true);
+}
+
+void RunGroup::restart() {
+  Scene scene = loadedScene_;
+  scene.world = world();
+  forEachSimulation([&](Simulation& simulation) {
+    simulation.interactions.selected.reset();
+    simulation.load(scene);
+  });
+  if (baseline_) setBaseline(true);
+}
+
+void RunGroup::setWorld(const WorldSettings& world) {
+  forEachSimulation([&](Simulation& simulation) { simulation.setWorld(world); });
+}
+
+BallDef RunGroup::ball(std::size_t index) const {
+  const Simulation& reference = run(0);
+  return {reference.positions()[index], reference.velocities()[index], reference.radii()[index],
+          reference.masses()[index], reference.colours()[index]};
+}
+
+void RunGroup::setBallCount(std::size_t count) {
+  const std::size_t current = ballCount();
+  newBallScale_ = 1.0;
+  if (count == current) return;
+  PlacedBalls added;
+  if (count > current) {
+    // New balls must clear the balls of every run, which differ once the runs diverge.
+    Scene room = scene();
+    room.balls.clear();
+    std::size_t copies = 0;
+    forEachSimulation([&](Simulation& simulation) {
+      const Scene state = simulation.scene();
+      room.balls.insert(room.balls.end(), state.balls.begin(), state.balls.end());
+      ++copies;
+    });
+    added = placeNewBalls(room, copies, count - current, current, steps() + count);
+    newBallScale_ = added.scale;
+  }
+  forEachSimulation([&](Simulation& simulation) {
+    std::vector<BallDef> balls = simulation.scene().balls;
+    balls.resize(std::min(count, balls.size()));
+    balls.insert(balls.end(), added.balls.begin(), added.balls.end());
+    simulation.replaceBalls(std::move(balls));
+  });
+  if (selected() && *selected() >= count) setSelected(std::nullopt);
+}
+
+void RunGroup::setBall(std::size_t index, const BallDef& ball) {
+  // Every run gets the edit, or none does: a run that refuses it (the ball would overlap one of
+  // its own) undoes it in the runs before, each back to the ball it had, which was valid there.
+  std::vector<std::pair<Simulation*, BallDef>> changed;
+  try {
+    forEachSimulation([&](Simulation& simulation) {
+      const BallDef before{simulation.positions()[index], simulation.velocities()[index],
+                           simulation.radii()[index], simulation.masses()[index],
+                           simulation.colours()[index]};
+      simulation.setBall(index, ball);
+      changed.emplace_back(&simulation, before);
+    });
+  } catch (const SceneError&) {
+    for (const auto& [simulation, before] : changed)
+      simulation->setBall(index, before);
+    throw;
+  }
+}
+
+void RunGroup::deleteBall(std::size_t index) {
+  if (index >= ballCount()) return;
+  forEachSimulation([&](Simulation& simulation) {
+    std::vector<BallDef> balls = simulation.scene().balls;
+    balls.erase(balls.begin() + static_cast<std::ptrdiff_t>(index));
+    simulation.replaceBalls(std::move(balls));
+  });
+  setSelected(std::nullopt);
+}
+
+void RunGroup::setMouseMode(MouseMode mode) {
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.mode = mode; });
+}
+
+void RunGroup::setScope(Scope scope) {
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.scope = scope; });
+}
+
+void RunGroup::setStrength(double strength) {
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.strength = strength; });
+}
+
+void RunGroup::setSelected(std::optional<std::size_t> index) {
+  if (index && *index >= ballCount()) index.reset();
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.selected = index; });
+}
+
+void RunGroup::pressTool(Vec2 point) {
+  forEachSimulation(
+      [&](Simulation& simulation) { simulation.interactions.press(point, simulation.balls()); });
+}
+
+void RunGroup::moveTool(Vec2 point) {
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.move(point); });
+}
+
+void RunGroup::releaseTool(Vec2 point) {
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.release(point); });
+}
+
+void RunGroup::addAttractor(Vec2 point) {
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.addAttractor(point); });
+}
+
+void RunGroup::clearAttractors() {
+  forEachSimulation([&](Simulation& simulation) { simulation.interactions.clearAttractors(); });
+}
+
+void RunGroup::setDt(double dt) {
+  forEachSimulation([&](Simulation& simulation) { simulation.setDt(dt); });
+}
+
+void RunGroup::step() {
+  forEachSimulation([&](Simulation& simulation) { simulation.step(); });
+}
+
+void RunGroup::runFor(double seconds) {
+  if (!(seconds > 0.0) || !std::isfinite(seconds)) return;
+  const auto count = static_cast<std::uint64_t>(std::llround(seconds / dt()));
+  for (std::uint64_t i = 0; i < count; ++i)
+    step();
+}
+
+void RunGroup::beginSteps(std::vector<BackendStep>& steps) {
+  steps.clear();
+  forEachSimulation([&](Simulation& simulation) { steps.push_back(simulation.beginStep()); });
+  stepping_ = true;
+}
+
+void RunGroup::finishSteps(std::vector<BackendStep>& steps) {
+  std::size_t next = 0;
+  forEachSimulation(
+      [&](Simulation& simulation) { simulation.finishStep(std::move(steps[next++])); });
+  steps.clear();
+  stepping_ = false;
+}
+
+void RunGroup::abandonSteps() {
+  if (!stepping_) return;
+  for (Run& run : runs_)
+    run.simulation->abandonStep(makeBackend(run.spec));
+  if (baseline_) baseline_->abandonStep(makeBackend(runs_.front().spec));
+  stepping_ = false;
+}
+
+void RunGroup::setPaused(bool paused) {
+  paused_ = paused;
+  accumulator_ = 0.0;
+}
+
+int RunGroup::takeDueSteps(double elapsedSeconds, double timeScale) {
+  if (paused_) return 0;
+  const double simulated = elapsedSeconds * timeScale;
+  if (simulated > 0.0 && std::isfinite(simulated)) accumulator_ += simulated;
+  const int maxSteps =
+      std::max(1, static_cast<int>(std::ceil(kMaxStepsPerFramePerTimeScale * timeScale)));
+  const double due = std::floor(accumulator_ / dt());
+  // Only a backlog beyond the cap is dropped: a frame that is due exactly the cap keeps the
+  // fraction of a step not due yet, or a machine that keeps up would lose real time.
+  if (due > maxSteps) {
+    accumulator_ = 0.0;  // the machine cannot keep up: drop the backlog rather than spiral
+    return maxSteps;
+  }
+  const int count = static_cast<int>(due);
+  accumulator_ -= count * dt();
+  return count;
+}
+
+}  // namespace fooball
