@@ -1,11 +1,6 @@
 #include "compare_csv.h"
 
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
-
 #include "fooball/number_text.h"
-#include "usage_error.h"
 
 namespace fooball::cli {
 
@@ -28,15 +23,7 @@ void appendField(std::string& row, std::string_view text) {
 
 }  // namespace
 
-CompareCsv::CompareCsv(const std::filesystem::path& path)
-    : path_(path), file_(std::fopen(path.c_str(), "w")) {
-  if (!file_) {
-    throw UsageError("--csv '" + path.string() +
-                     "': cannot open for writing: " + std::strerror(errno));
-  }
-  std::fputs(kHeader, file_.get());
-  std::fputc('\n', file_.get());
-}
+CompareCsv::CompareCsv(const std::filesystem::path& path) : file_(path, "--csv", kHeader) {}
 
 void CompareCsv::writeRow(std::string_view run, const Metrics& metrics,
                           const Divergence& fromReference) {
@@ -56,17 +43,11 @@ void CompareCsv::writeRow(std::string_view run, const Metrics& metrics,
   addNumber(fromReference.rmsPositionDifference);
   addNumber(fromReference.maxPositionDifference);
   row_ += '\n';
-  std::fwrite(row_.data(), 1, row_.size(), file_.get());
+  file_.write(row_);
 }
 
 void CompareCsv::close() {
-  const bool writeFailed = std::ferror(file_.get()) != 0;
-  // fclose flushes the buffer, so it can be the first call to see a full disk.
-  const bool closeFailed = std::fclose(file_.release()) != 0;
-  if (writeFailed || closeFailed) {
-    throw std::runtime_error("--csv '" + path_.string() +
-                             "': writing failed: " + std::strerror(errno));
-  }
+  file_.close();
 }
 
 }  // namespace fooball::cli

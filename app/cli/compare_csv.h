@@ -1,11 +1,10 @@
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <string_view>
 
+#include "csv_file.h"
 #include "fooball/divergence.h"
 #include "fooball/metrics.h"
 
@@ -32,12 +31,7 @@ class CompareCsv {
   void close();
 
  private:
-  struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-  };
-
-  std::filesystem::path path_;
-  std::unique_ptr<std::FILE, FileCloser> file_;
+  CsvFile file_;
   std::string row_;  ///< reused for every row
 };
 

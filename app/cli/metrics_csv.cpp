@@ -1,23 +1,10 @@
 #include "metrics_csv.h"
 
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
-
 #include "fooball/number_text.h"
-#include "usage_error.h"
 
 namespace fooball::cli {
 
-MetricsCsv::MetricsCsv(const std::filesystem::path& path)
-    : path_(path), file_(std::fopen(path.c_str(), "w")) {
-  if (!file_) {
-    throw UsageError("--metrics '" + path.string() +
-                     "': cannot open for writing: " + std::strerror(errno));
-  }
-  std::fputs(kHeader, file_.get());
-  std::fputc('\n', file_.get());
-}
+MetricsCsv::MetricsCsv(const std::filesystem::path& path) : file_(path, "--metrics", kHeader) {}
 
 void MetricsCsv::writeRow(const Metrics& metrics) {
   row_.clear();
@@ -36,17 +23,11 @@ void MetricsCsv::writeRow(const Metrics& metrics) {
   addNumber(metrics.wallImpulse);
   addNumber(metrics.maxOverlap);
   row_ += std::to_string(metrics.escaped) + '\n';
-  std::fwrite(row_.data(), 1, row_.size(), file_.get());
+  file_.write(row_);
 }
 
 void MetricsCsv::close() {
-  const bool writeFailed = std::ferror(file_.get()) != 0;
-  // fclose flushes the buffer, so it can be the first call to see a full disk.
-  const bool closeFailed = std::fclose(file_.release()) != 0;
-  if (writeFailed || closeFailed) {
-    throw std::runtime_error("--metrics '" + path_.string() +
-                             "': writing failed: " + std::strerror(errno));
-  }
+  file_.close();
 }
 
 }  // namespace fooball::cli

@@ -1,10 +1,9 @@
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <string>
 
+#include "csv_file.h"
 #include "fooball/metrics.h"
 
 namespace fooball::cli {
@@ -27,12 +26,7 @@ class MetricsCsv {
   void close();
 
  private:
-  struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-  };
-
-  std::filesystem::path path_;
-  std::unique_ptr<std::FILE, FileCloser> file_;
+  CsvFile file_;
   std::string row_;  ///< reused for every row
 };
 

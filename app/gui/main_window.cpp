@@ -33,6 +33,8 @@ namespace {
 
 constexpr int kStatusMessageMs = 8000;
 constexpr int kSidebarWidth = 330;  // px
+/// The charts' first share of the window's height: the box stays the largest thing.
+constexpr double kChartsShareOfHeight = 0.38;
 
 std::filesystem::path toPath(const QString& path) {
   return std::filesystem::path(QFile::encodeName(path).toStdString());
@@ -309,12 +311,12 @@ void MainWindow::showEvent(QShowEvent* event) {
   QMainWindow::showEvent(event);
   if (docksSized_) return;
   docksSized_ = true;
-  // Once the window has its size: the view gets most of it, the charts a strip below (as
-  // small as they go), the settings a column.
+  // Once the window has its size: the view gets most of it, the charts a strip below (they
+  // scroll when there are more than fit), the settings a column.
   QMetaObject::invokeMethod(
       this,
       [this] {
-        resizeDocks({chartsDock_}, {1}, Qt::Vertical);
+        resizeDocks({chartsDock_}, {int(kChartsShareOfHeight * height())}, Qt::Vertical);
         resizeDocks({sidebarDock_}, {kSidebarWidth}, Qt::Horizontal);
       },
       Qt::QueuedConnection);

@@ -88,10 +88,6 @@ BackendStep StepWorker::take() {
   return step;
 }
 
-const Backend& StepWorker::backend() const {
-  return shared_->step->backend();
-}
-
 int StepWorker::givenUpStepsRunning() {
   return givenUpSteps.load();
 }

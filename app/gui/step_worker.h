@@ -28,8 +28,6 @@ class StepWorker {
   /// The finished step, for Simulation::finishStep(); only after finishedBy() said so. Throws
   /// what the step threw.
   BackendStep take();
-  /// The backend stepping, to read its options (a backend does not change them while stepping).
-  const Backend& backend() const;
   /// s since the step started.
   double seconds() const { return double(clock_.nsecsElapsed()) * 1e-9; }
 

@@ -10,6 +10,7 @@
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QTextDocument>
+#include <QScrollArea>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -96,7 +97,14 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   layout->addWidget(createToolBar());
-  layout->addWidget(chartArea_, 1);
+  // The charts scroll rather than push the window taller than the screen: four charts with
+  // their titles and axes need more height than a 1000×650 window has to spare.
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(chartArea_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  layout->addWidget(scroll, 1);
 
   refreshTimer_ = new QTimer(this);
   refreshTimer_->setInterval(kRefreshIntervalMs);
