@@ -7,10 +7,10 @@
 #include <QImage>
 #include <QLabel>
 #include <QPalette>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QTextDocument>
-#include <QScrollArea>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
