@@ -140,6 +140,12 @@ void MainWindow::connectRuns() {
     updateStatusBar();
     view_->update();
   });
+  connect(runs_.get(), &RunController::optionsChanged, this, [this](int index) {
+    charts_->renameRun(index, runs_->label(index));
+    compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
+    updateTitle();
+    updateStatusBar();
+  });
   connect(runs_.get(), &RunController::runsRestarted, this, [this](double time) {
     charts_->addMarker(time, tr("runs restarted identical"));
     showStatus(tr("Every run restarted from run 0's state at t = %1 s, so that all start "

@@ -66,7 +66,7 @@ void RunController::setRunSpec(int index, const RunSpec& spec) {
 void RunController::setBackendOption(int index, const QString& name, double value) {
   settle();
   group_.setOption(std::size_t(index), name.toStdString(), value);
-  emit runsChanged();
+  emit optionsChanged(index);
 }
 
 void RunController::addRun(const RunSpec& spec) {

@@ -99,8 +99,10 @@ class RunController : public QObject {
   double stepSeconds() const;
 
  signals:
-  /// A run's backend or options changed, or runs were added or removed.
+  /// A run's backend changed, or runs were added or removed.
   void runsChanged();
+  /// An option of run `index` changed (its label with it); its options form stays as it is.
+  void optionsChanged(int index);
   /// Every run restarted from run 0's state at simulated time `time` (s), so that they start
   /// identical.
   void runsRestarted(double time);

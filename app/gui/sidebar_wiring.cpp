@@ -110,7 +110,6 @@ void wireRunList(MainWindow& window) {
                    [&window](int run, const QString& name, double value) {
                      try {
                        window.runs().setBackendOption(run, name, value);
-                       window.charts()->renameRun(run, window.runs().label(run));
                        window.markChange(QStringLiteral("%1 = %2").arg(name, formatNumber(value)));
                      } catch (const std::invalid_argument& error) {
                        window.showStatus(QString::fromStdString(error.what()));

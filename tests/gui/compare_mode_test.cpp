@@ -89,10 +89,17 @@ TEST_F(CompareMode, FourRunsOverlayEveryChartAndSideBySideGivesEachRunATile) {
   open(fooball::testing::gas(60));
   addRun(QStringLiteral("exact"));
   addRun(QStringLiteral("elastic"));
-  runs().setBackendOption(2, QStringLiteral("substeps"), 1.0);
+  // Through the run's own options form, as a user sets it.
+  auto* substeps =
+      runList()->optionsForm(2)->findChild<QSpinBox*>(QStringLiteral("option_substeps"));
+  ASSERT_NE(substeps, nullptr);
+  substeps->setValue(1);
   addRun(QStringLiteral("box2d"));
   ASSERT_EQ(runs().runCount(), 4);
   EXPECT_EQ(runs().label(2), QStringLiteral("elastic:substeps=1"));
+  EXPECT_TRUE(window->charts()->runLegendText().contains(QStringLiteral("elastic:substeps=1")))
+      << window->charts()->runLegendText().toStdString();
+  EXPECT_TRUE(window->windowTitle().contains(QStringLiteral("elastic:substeps=1")));
   frames(30);
   window->charts()->refresh();
   for (int run = 0; run < 4; ++run) {
