@@ -28,8 +28,8 @@ struct StartupOptions {
   Scene scene;
   QString presetName;  ///< the preset the scene came from; empty for a scene file
   QString sourceName;  ///< shown in the title: the preset's or the file's name
-  /// Run 0 first, then the compare runs (--backend, --compare); one run by default.
-  std::vector<RunSpec> runs{RunSpec{"elastic", {}}};
+  /// Run 0 first, then the compare runs (--backend, --compare): 1 to RunGroup::kMaxRuns.
+  std::vector<RunSpec> runs;
   /// Ball count right after loading, as if set with the spinner (--balls).
   std::optional<std::size_t> balls;
   /// Drawing options to turn on (CommandLine::show) and attractors to place (m).
