@@ -2,21 +2,15 @@
 
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFile>
-#include <QFileInfo>
 #include <QMessageBox>
 #include <QScrollArea>
 #include <QShowEvent>
 #include <QStatusBar>
 #include <QVBoxLayout>
-#include <exception>
 
 #include "ball_inspector.h"
 #include "charts/chart_panel.h"
 #include "compare_readout.h"
-#include "fooball/presets.h"
-#include "fooball/scene_error.h"
-#include "fooball/scene_file.h"
 #include "frame_loop.h"
 #include "run_controller.h"
 #include "run_list_editor.h"
@@ -35,10 +29,6 @@ constexpr int kStatusMessageMs = 8000;
 constexpr int kSidebarWidth = 330;  // px
 /// The charts' first share of the window's height: the box stays the largest thing.
 constexpr double kChartsShareOfHeight = 0.38;
-
-std::filesystem::path toPath(const QString& path) {
-  return std::filesystem::path(QFile::encodeName(path).toStdString());
-}
 
 }  // namespace
 
@@ -223,65 +213,6 @@ void MainWindow::loadScene(const Scene& scene, const QString& presetName,
   syncSidebar();
   resetCharts();
   updateTitle();
-}
-
-bool MainWindow::openSceneFile(const QString& path) {
-  try {
-    const Scene scene = loadSceneFile(toPath(path));
-    loadScene(scene, QString(), QFileInfo(path).fileName());
-    showStatus(tr("Opened %1: %2 balls").arg(path).arg(scene.balls.size()));
-    return true;
-  } catch (const std::exception& error) {
-    const QString message = QString::fromStdString(error.what());
-    showStatus(tr("Could not open the scene; the current one stays: %1").arg(message));
-    reportError_(tr("Could not open the scene"), message);
-    return false;
-  }
-}
-
-bool MainWindow::saveSceneFile(const QString& path) {
-  try {
-    fooball::saveSceneFile(runs_->group().scene(), toPath(path));
-    showStatus(tr("Saved %1").arg(path));
-    return true;
-  } catch (const std::exception& error) {
-    const QString message = QString::fromStdString(error.what());
-    showStatus(message);
-    reportError_(tr("Could not save the scene"), message);
-    return false;
-  }
-}
-
-bool MainWindow::openPreset(const QString& name) {
-  try {
-    loadScene(loadPreset(name.toStdString()), name, name);
-    return true;
-  } catch (const SceneError& error) {
-    const QString message = QString::fromStdString(error.what());
-    showStatus(message);
-    reportError_(tr("Could not load the preset"), message);
-    syncSidebar();
-    return false;
-  }
-}
-
-bool MainWindow::setBallCount(std::size_t count) {
-  const std::size_t before = runs_->group().ballCount();
-  try {
-    runs_->setBallCount(count);
-  } catch (const SceneError& error) {
-    showStatus(QString::fromStdString(error.what()));
-    sidebar_->showBallCount(runs_->group().ballCount());
-    return false;
-  }
-  if (count != before) markChange(tr("%1 balls").arg(count));
-  const double scale = runs_->group().newBallScale();
-  if (count > before && scale < 1.0) {
-    showStatus(tr("Added %L1 balls at %2 % of the size of the balls there, so that they fit")
-                   .arg(count - before)
-                   .arg(100.0 * scale, 0, 'g', 2));
-  }
-  return true;
 }
 
 void MainWindow::restart() {

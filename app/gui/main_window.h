@@ -44,7 +44,8 @@ struct StartupOptions {
 /// settings sidebar and the chart panel in docks, the menus (WindowActions), the status bar
 /// (StatusPanel) and the frame loop (FrameLoop), connects them to the RunController, and
 /// keeps the widgets in step with the runs. The runs' bookkeeping lives in the engine's
-/// RunGroup; what the sidebar's controls do is in sidebar_wiring.cpp.
+/// RunGroup; what the sidebar's controls do is in sidebar_wiring.cpp, scene files and presets
+/// in scene_commands.cpp.
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
@@ -71,14 +72,8 @@ class MainWindow : public QMainWindow {
   void setErrorReporter(ErrorReporter reporter) { reportError_ = std::move(reporter); }
   void reportError(const QString& title, const QString& message) { reportError_(title, message); }
 
-  /// Loads a scene file into every run; on error shows it and keeps the current scene.
-  bool openSceneFile(const QString& path);
-  bool saveSceneFile(const QString& path);
-  /// Starts on a preset; on error shows it and keeps the current scene.
-  bool openPreset(const QString& name);
-  /// Sets the ball count like the spinner; on error shows it in the status bar and keeps the
-  /// balls.
-  bool setBallCount(std::size_t count);
+  /// Every run starts on `scene` (valid); the sidebar, the charts and the title follow.
+  void loadScene(const Scene& scene, const QString& presetName, const QString& sourceName);
   /// Back to the loaded scene at t = 0, keeping the settings of now.
   void restart();
   /// The loaded scene exactly as loaded, sliders at their defaults.
@@ -111,7 +106,6 @@ class MainWindow : public QMainWindow {
  private:
   void createDocks();
   void connectRuns();
-  void loadScene(const Scene& scene, const QString& presetName, const QString& sourceName);
   void resetCharts();
   void updateTitle();
 

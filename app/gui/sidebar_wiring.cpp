@@ -10,6 +10,7 @@
 #include "number_format.h"
 #include "run_controller.h"
 #include "run_list_editor.h"
+#include "scene_commands.h"
 #include "settings_sidebar.h"
 #include "simulation_view.h"
 #include "status_panel.h"
@@ -160,9 +161,10 @@ void wireInspector(MainWindow& window) {
 void wireSidebar(MainWindow& window) {
   SettingsSidebar* s = window.sidebar();
   MainWindow* w = &window;
-  QObject::connect(s, &SettingsSidebar::presetChosen, w, &MainWindow::openPreset);
+  QObject::connect(s, &SettingsSidebar::presetChosen, w,
+                   [w](const QString& name) { openPreset(*w, name); });
   QObject::connect(s, &SettingsSidebar::ballCountChosen, w,
-                   [w](int count) { w->setBallCount(static_cast<std::size_t>(count)); });
+                   [w](int count) { setBallCount(*w, static_cast<std::size_t>(count)); });
   QObject::connect(s, &SettingsSidebar::restartRequested, w, &MainWindow::restart);
   QObject::connect(s, &SettingsSidebar::resetSceneRequested, w, &MainWindow::resetScene);
 

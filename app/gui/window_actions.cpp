@@ -13,6 +13,7 @@
 #include "main_window.h"
 #include "run_controller.h"
 #include "run_list_editor.h"
+#include "scene_commands.h"
 #include "settings_sidebar.h"
 #include "sidebar_wiring.h"
 #include "simulation_view.h"
@@ -148,13 +149,13 @@ void WindowActions::showPaused(bool paused) {
 void WindowActions::openSceneDialog() {
   const QString path = QFileDialog::getOpenFileName(&window_, tr("Open scene"), QString(),
                                                     tr("FooBall scenes (*.json);;All files (*)"));
-  if (!path.isEmpty()) window_.openSceneFile(path);
+  if (!path.isEmpty()) openSceneFile(window_, path);
 }
 
 void WindowActions::saveSceneDialog() {
   const QString path = QFileDialog::getSaveFileName(&window_, tr("Save scene"), QString(),
                                                     tr("FooBall scenes (*.json)"));
-  if (!path.isEmpty()) window_.saveSceneFile(path);
+  if (!path.isEmpty()) saveSceneFile(window_, path);
 }
 
 void WindowActions::exportChartsPng() {

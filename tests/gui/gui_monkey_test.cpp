@@ -28,6 +28,7 @@
 #include "log_slider.h"
 #include "robustness/case_run.h"
 #include "run_list_editor.h"
+#include "scene_commands.h"
 #include "settings_sidebar.h"
 #include "window_actions.h"
 
@@ -65,7 +66,7 @@ class GuiMonkey : public GuiTest {
  protected:
   void SetUp() override {
     open(fooball::testing::emptyBox());
-    window->openPreset(QStringLiteral("default"));
+    openPreset(*window, QStringLiteral("default"));
     sidebar_ = window->sidebar();
     for (QAction* action : window->findChildren<QAction*>()) {
       if (action->shortcut() == QKeySequence(Qt::Key_Space)) pause_ = action;

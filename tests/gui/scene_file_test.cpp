@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gui_fixture.h"
+#include "scene_commands.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -28,7 +29,7 @@ TEST_F(SceneFiles, BrokenSceneFileLeavesTheSceneUnchanged) {
   const double time = mainRun().time();
   const QString path =
       write(QStringLiteral("broken.json"), R"({"format": "fooball-scene", "version": 1, "box": )");
-  EXPECT_FALSE(window->openSceneFile(path));
+  EXPECT_FALSE(openSceneFile(*window, path));
   ASSERT_EQ(errors.size(), 1);
   EXPECT_TRUE(errors.front().contains(QStringLiteral("broken.json")))
       << "the error names the file: " << errors.front().toStdString();
@@ -44,7 +45,7 @@ TEST_F(SceneFiles, InvalidBallIsReportedWithItsPlace) {
       write(QStringLiteral("negative.json"),
             R"({"format": "fooball-scene", "version": 1, "box": {"width": 4, "height": 3},
           "balls": [{"position": [1, 1], "radius": -1}]})");
-  EXPECT_FALSE(window->openSceneFile(path));
+  EXPECT_FALSE(openSceneFile(*window, path));
   ASSERT_EQ(errors.size(), 1);
   EXPECT_TRUE(errors.front().contains(QStringLiteral("radius"))) << errors.front().toStdString();
   EXPECT_EQ(mainRun().ballCount(), 3u);
@@ -52,7 +53,7 @@ TEST_F(SceneFiles, InvalidBallIsReportedWithItsPlace) {
 
 TEST_F(SceneFiles, MissingFileIsReported) {
   open(stillBalls());
-  EXPECT_FALSE(window->openSceneFile(directory.filePath(QStringLiteral("nothing.json"))));
+  EXPECT_FALSE(openSceneFile(*window, directory.filePath(QStringLiteral("nothing.json"))));
   EXPECT_EQ(errors.size(), 1);
   EXPECT_EQ(mainRun().ballCount(), 3u);
 }
@@ -61,10 +62,10 @@ TEST_F(SceneFiles, SavedSceneOpensAgainWithTheSameBalls) {
   open(fooball::testing::gas(25));
   frames(10);
   const QString path = directory.filePath(QStringLiteral("saved.json"));
-  ASSERT_TRUE(window->saveSceneFile(path));
+  ASSERT_TRUE(saveSceneFile(*window, path));
   const Scene saved = mainRun().scene();
   frames(10);
-  ASSERT_TRUE(window->openSceneFile(path));
+  ASSERT_TRUE(openSceneFile(*window, path));
   EXPECT_TRUE(errors.isEmpty());
   EXPECT_EQ(mainRun().time(), 0.0);
   ASSERT_EQ(mainRun().ballCount(), saved.balls.size());

@@ -1,0 +1,85 @@
+#include "scene_commands.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <exception>
+
+#include "fooball/presets.h"
+#include "fooball/scene_error.h"
+#include "fooball/scene_file.h"
+#include "main_window.h"
+#include "run_controller.h"
+#include "settings_sidebar.h"
+
+namespace fooball::gui {
+
+namespace {
+
+std::filesystem::path toPath(const QString& path) {
+  return std::filesystem::path(QFile::encodeName(path).toStdString());
+}
+
+}  // namespace
+
+bool openSceneFile(MainWindow& window, const QString& path) {
+  try {
+    const Scene scene = loadSceneFile(toPath(path));
+    window.loadScene(scene, QString(), QFileInfo(path).fileName());
+    window.showStatus(QObject::tr("Opened %1: %2 balls").arg(path).arg(scene.balls.size()));
+    return true;
+  } catch (const std::exception& error) {
+    const QString message = QString::fromStdString(error.what());
+    window.showStatus(
+        QObject::tr("Could not open the scene; the current one stays: %1").arg(message));
+    window.reportError(QObject::tr("Could not open the scene"), message);
+    return false;
+  }
+}
+
+bool saveSceneFile(MainWindow& window, const QString& path) {
+  try {
+    fooball::saveSceneFile(window.runs().group().scene(), toPath(path));
+    window.showStatus(QObject::tr("Saved %1").arg(path));
+    return true;
+  } catch (const std::exception& error) {
+    const QString message = QString::fromStdString(error.what());
+    window.showStatus(message);
+    window.reportError(QObject::tr("Could not save the scene"), message);
+    return false;
+  }
+}
+
+bool openPreset(MainWindow& window, const QString& name) {
+  try {
+    window.loadScene(loadPreset(name.toStdString()), name, name);
+    return true;
+  } catch (const SceneError& error) {
+    const QString message = QString::fromStdString(error.what());
+    window.showStatus(message);
+    window.reportError(QObject::tr("Could not load the preset"), message);
+    window.syncSidebar();
+    return false;
+  }
+}
+
+bool setBallCount(MainWindow& window, std::size_t count) {
+  const std::size_t before = window.runs().group().ballCount();
+  try {
+    window.runs().setBallCount(count);
+  } catch (const SceneError& error) {
+    window.showStatus(QString::fromStdString(error.what()));
+    window.sidebar()->showBallCount(window.runs().group().ballCount());
+    return false;
+  }
+  if (count != before) window.markChange(QObject::tr("%1 balls").arg(count));
+  const double scale = window.runs().group().newBallScale();
+  if (count > before && scale < 1.0) {
+    window.showStatus(
+        QObject::tr("Added %L1 balls at %2 % of the size of the balls there, so that they fit")
+            .arg(count - before)
+            .arg(100.0 * scale, 0, 'g', 2));
+  }
+  return true;
+}
+
+}  // namespace fooball::gui
