@@ -26,6 +26,7 @@
 
 #include "capacity_chart_builder.h"
 #include "registry.h"
+#include "view_text.h"
 
 namespace fooball::gui {
 
@@ -33,10 +34,6 @@ namespace {
 
 constexpr int kProgressSteps = 1000;  ///< the progress bar's maximum: 0.1 % resolution
 constexpr int kElapsedRefreshMs = 200;
-
-QString toQString(std::string_view text) {
-  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
 
 QString noteOf(const measure::SearchOutcome& outcome) {
   if (outcome.reachedMaxBalls) return QObject::tr("the scene format's limit: capacity is higher");
@@ -115,10 +112,10 @@ QWidget* BenchmarkDialog::createSettings() {
   backends_ = new QListWidget;
   backends_->setToolTip(tr("The backends to measure, one after another"));
   for (const BackendInfo& info : registeredBackends()) {
-    auto* item = new QListWidgetItem(toQString(info.name), backends_);
+    auto* item = new QListWidgetItem(fromView(info.name), backends_);
     item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
     item->setCheckState(Qt::Checked);
-    item->setToolTip(toQString(info.description));
+    item->setToolTip(fromView(info.description));
   }
   backends_->setMaximumHeight(backends_->sizeHintForRow(0) * (backends_->count() + 1));
   form->addRow(tr("&Backends:"), backends_);
@@ -204,7 +201,7 @@ measure::CapacitySettings BenchmarkDialog::settingsFromFields(
     settings.options.push_back(option.toStdString());
   for (const BackendInfo& info : registeredBackends()) {
     const QList<QListWidgetItem*> items =
-        backends_->findItems(toQString(info.name), Qt::MatchExactly);
+        backends_->findItems(fromView(info.name), Qt::MatchExactly);
     if (!items.isEmpty() && items.front()->checkState() == Qt::Checked) chosen.push_back(info);
   }
   return settings;
@@ -226,7 +223,7 @@ bool BenchmarkDialog::start() {
   results_.clear();
   showResults();
   progress_->setValue(0);
-  progressText_ = tr("Starting %1").arg(toQString(chosen.front().name));
+  progressText_ = tr("Starting %1").arg(fromView(chosen.front().name));
   status_->setText(progressText_);
   clock_.start();
   elapsedTimer_->start();
@@ -237,7 +234,7 @@ bool BenchmarkDialog::start() {
     const auto progress = [this](const measure::CapacityProgress& at) {
       QMetaObject::invokeMethod(
           this,
-          [this, backend = toQString(at.backend), index = at.backendIndex, count = at.backendCount,
+          [this, backend = fromView(at.backend), index = at.backendIndex, count = at.backendCount,
            balls = at.search.latest.balls, ms = at.search.latest.medianStepMs,
            fraction = at.fraction] { showProgress(backend, index, count, balls, ms, fraction); },
           Qt::QueuedConnection);

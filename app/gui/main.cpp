@@ -14,6 +14,7 @@
 #include "headless_run.h"
 #include "main_window.h"
 #include "registry.h"
+#include "view_text.h"
 
 namespace {
 
@@ -71,14 +72,13 @@ StartupOptions startupOptions(const CommandLine& line, bool remember) {
     options.scene = loadSceneFile(QFile::encodeName(*line.sceneFile).toStdString());
     options.sourceName = QFileInfo(*line.sceneFile).fileName();
   } else {
-    QString name =
-        line.preset.value_or(QString::fromUtf8(kDefaultPreset.data(), kDefaultPreset.size()));
+    QString name = line.preset.value_or(fromView(kDefaultPreset));
     if (!line.preset && remember) name = settings.value("scene/preset", name).toString();
     try {
       options.scene = loadPreset(name.toStdString());
     } catch (const SceneError&) {
       if (line.preset) throw;
-      name = QString::fromUtf8(kDefaultPreset.data(), kDefaultPreset.size());
+      name = fromView(kDefaultPreset);
       options.scene = loadPreset(kDefaultPreset);
     }
     options.presetName = name;

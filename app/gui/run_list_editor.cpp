@@ -14,14 +14,11 @@
 #include "charts/chart_panel.h"
 #include "fooball/run_group.h"
 #include "registry.h"
+#include "view_text.h"
 
 namespace fooball::gui {
 
 namespace {
-
-QString fromView(std::string_view text) {
-  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
 
 /// The first registered backend no run uses yet, so Add run compares a new method; the first
 /// backend when every one is in use (then the user picks other options).

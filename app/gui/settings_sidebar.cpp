@@ -19,14 +19,11 @@
 #include "log_slider.h"
 #include "number_format.h"
 #include "run_list_editor.h"
+#include "view_text.h"
 
 namespace fooball::gui {
 
 namespace {
-
-QString fromView(std::string_view text) {
-  return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
 
 /// A label above a full-width control, with the label as its buddy for keyboard access.
 void addLabelled(QVBoxLayout* layout, const QString& text, QWidget* control,

@@ -20,8 +20,6 @@ namespace fooball::gui {
 
 namespace {
 
-constexpr double kDefaultStrength = 10.0;  // 1/s², as Interactions starts
-
 QString modeName(MouseMode mode) {
   switch (mode) {
     case MouseMode::Attract:
@@ -243,11 +241,12 @@ void resetSliders(MainWindow& window) {
     world.gravity = loaded.world.gravity;
     world.airResistance = loaded.world.airResistance;
   });
-  window.runs().changeTools([](RunGroup& group) { group.setStrength(kDefaultStrength); });
+  window.runs().changeTools(
+      [](RunGroup& group) { group.setStrength(Interactions::kDefaultStrength); });
   window.frames().setTimeScale(FrameLoop::kDefaultTimeScale);
   SettingsSidebar* sidebar = window.sidebar();
   sidebar->showWorld(window.runs().group().world());
-  sidebar->showStrength(kDefaultStrength);
+  sidebar->showStrength(Interactions::kDefaultStrength);
   sidebar->showTimeScale(FrameLoop::kDefaultTimeScale);
   window.markChange(QObject::tr("sliders reset"));
 }

@@ -14,7 +14,6 @@ namespace fooball::gui {
 
 namespace {
 
-constexpr double kDefaultStrength = 10.0;  // 1/s², as Interactions starts
 constexpr double kMinTimeScale = 0.05;
 constexpr double kMaxTimeScale = 8.0;
 
@@ -36,7 +35,7 @@ bool readWindowSettings(MainWindow& window) {
   const auto scope = static_cast<Scope>(
       std::clamp(settings.value("mouse/scope", 0).toInt(), 0, int(Scope::Selected)));
   const double strength =
-      std::max(0.0, settings.value("mouse/strength", kDefaultStrength).toDouble());
+      std::max(0.0, settings.value("mouse/strength", Interactions::kDefaultStrength).toDouble());
   window.runs().changeTools([&](RunGroup& group) {
     group.setMouseMode(mode);
     group.setScope(scope);

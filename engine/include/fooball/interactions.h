@@ -28,11 +28,14 @@ struct BallsView {
 /// (F = m·a), so a tool moves big and small balls alike.
 class Interactions {
  public:
+  /// 1/s², what strength starts at (and Reset sliders goes back to).
+  static constexpr double kDefaultStrength = 10.0;
+
   MouseMode mode = MouseMode::Attract;
   Scope scope = Scope::All;
   /// 1/s²: attract/repel acceleration per metre of distance to the cursor (a spring of
   /// ω = √strength); the slingshot launches at 0.2·strength m/s per metre of pull.
-  double strength = 10.0;
+  double strength = kDefaultStrength;
   std::optional<std::size_t> selected;  ///< the ball Scope::Selected acts on
 
   /// A press at `point` (m). Grab and slingshot take the target ball (nearest, or the
