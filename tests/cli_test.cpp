@@ -20,6 +20,7 @@
 #include "backend_profiles.h"
 #include "fooball/presets.h"
 #include "fooball/scene_file.h"
+#include "fooball/version.h"
 #include "registry.h"
 
 extern char** environ;
@@ -201,6 +202,14 @@ TEST_F(CliTest, HelpExitsZeroAndDescribesRun) {
   const CliResult result = runCli({"run", "--help"});
   EXPECT_EQ(result.exitCode, 0) << result.err;
   EXPECT_THAT(result.out, AllOf(HasSubstr("--duration"), HasSubstr("--metrics")));
+}
+
+TEST_F(CliTest, VersionPrintsTheProjectVersionAndExitsZero) {
+  const CliResult result = runCli({"--version"});
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(result.out, std::string(fooball::kVersionLine) + "\n");
+  EXPECT_THAT(std::string(fooball::kVersionLine),
+              ::testing::MatchesRegex("fooball [0-9]+\\.[0-9]+\\.[0-9]+"));
 }
 
 TEST_F(CliTest, MissingSubcommandExitsTwo) {

@@ -10,6 +10,7 @@
 #include "compare_command.h"
 #include "failure_map_command.h"
 #include "fooball/scene_error.h"
+#include "fooball/version.h"
 #include "list_command.h"
 #include "run_command.h"
 #include "run_options.h"
@@ -270,6 +271,8 @@ int main(int argc, char** argv) {
   CLI::App app{"FooBall: bouncing balls on interchangeable physics backends, headless.",
                kProgramName};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string(fooball::kVersionLine),
+                       "print the version and exit");
   app.footer("Exit codes: 0 ok, 2 bad arguments or bad scene, 1 any other failure.");
   CLI::App* list = app.add_subcommand("list", "list the backends with their options, and presets");
   CLI::App* run = app.add_subcommand("run", "run a scene and report energy and momentum");
@@ -301,8 +304,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    // --help arrives as a "success" error; CLI11 prints it. Real errors get our one line
-    // instead of CLI11's help dump.
+    // --help and --version arrive as "success" errors; CLI11 prints them. Real errors get our one
+    // line instead of CLI11's help dump.
     if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(error);
     return reportError(std::string(error.what()) + " (see '" + kProgramName + " --help')",
                        kExitBadInput);

@@ -68,12 +68,13 @@ long long parseCount(const QString& text, const QString& option, long long minim
 
 QString usageText() {
   return QStringLiteral(
-      "Usage: fooball [--scene FILE | --preset NAME] [--backend SPEC] [--compare SPEC]...\n"
-      "               [--size WxH] [--balls N] [--show ITEM,...] [--attractor X,Y]...\n"
-      "               [--frames N] [--screenshot FILE.png]\n"
+      "Usage: fooball [OPTIONS]\n"
       "\n"
       "FooBall: bouncing balls on interchangeable physics backends, side by side.\n"
+      "It opens on the built-in default scene (or --scene, --preset) with one run, and\n"
+      "one more run per --compare.\n"
       "\n"
+      "Options:\n"
       "  --scene FILE       open a scene file (JSON)\n"
       "  --preset NAME      start on a built-in scene (fooball-cli list shows them)\n"
       "  --backend SPEC     run 0's method: NAME[:KEY=VALUE[,KEY=VALUE]...], e.g.\n"
@@ -88,6 +89,9 @@ QString usageText() {
       "  --frames N         run N frames (physics for 1/60 s + drawing each), print the mean\n"
       "                     frame time in ms and exit; works without a display\n"
       "  --screenshot FILE  after the frames, save the window as PNG\n"
+      "  --reset-settings   forget the remembered window layout, scene, backend and\n"
+      "                     drawing options, and start as on first use\n"
+      "  --version          print the version and exit\n"
       "  -h, --help         show this help\n");
 }
 
@@ -105,9 +109,11 @@ CommandLine parseCommandLine(const QStringList& arguments) {
                                       QStringLiteral("FILE"));
   const QCommandLineOption show(QStringLiteral("show"), QString(), QStringLiteral("ITEMS"));
   const QCommandLineOption attractor(QStringLiteral("attractor"), QString(), QStringLiteral("X,Y"));
+  const QCommandLineOption resetSettings(QStringLiteral("reset-settings"));
+  const QCommandLineOption version(QStringLiteral("version"));
   const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")});
-  parser.addOptions(
-      {scene, preset, backend, compare, size, balls, frames, screenshot, show, attractor, help});
+  parser.addOptions({scene, preset, backend, compare, size, balls, frames, screenshot, show,
+                     attractor, resetSettings, version, help});
 
   if (!parser.parse(arguments)) throw UsageError(parser.errorText().toStdString());
   if (!parser.positionalArguments().isEmpty()) {
@@ -117,6 +123,8 @@ CommandLine parseCommandLine(const QStringList& arguments) {
 
   CommandLine line;
   line.help = parser.isSet(help);
+  line.version = parser.isSet(version);
+  line.resetSettings = parser.isSet(resetSettings);
   const auto single = [&](const QCommandLineOption& option) -> std::optional<QString> {
     if (!parser.isSet(option)) return std::nullopt;
     const QStringList values = parser.values(option);

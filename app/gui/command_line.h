@@ -14,7 +14,8 @@
 namespace fooball::gui {
 
 /// `fooball [--scene FILE | --preset NAME] [--backend SPEC] [--compare SPEC]… [--size WxH]
-///          [--balls N] [--show ITEM,…] [--attractor X,Y]… [--frames N] [--screenshot FILE.png]`
+///          [--balls N] [--show ITEM,…] [--attractor X,Y]… [--frames N] [--screenshot FILE.png]
+///          [--reset-settings] [--version]`
 /// (DESIGN.md, "fooball (GUI)"; --balls, --show and --attractor are extras for benchmarks and
 /// reproducible screenshots).
 struct CommandLine {
@@ -30,6 +31,8 @@ struct CommandLine {
   QStringList show;
   std::vector<Vec2> attractors;  ///< m, permanent attractors placed at the start
   bool help = false;
+  bool version = false;
+  bool resetSettings = false;  ///< forget every remembered setting before starting
 
   /// Runs without a window system of its own: --frames or --screenshot.
   bool headless() const { return frames.has_value() || screenshot.has_value(); }

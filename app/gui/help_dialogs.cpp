@@ -3,16 +3,19 @@
 #include <QMessageBox>
 #include <QObject>
 
+#include "fooball/version.h"
+#include "view_text.h"
+
 namespace fooball::gui {
 
 void showAbout(QWidget* parent) {
   QMessageBox::about(
       parent, QObject::tr("About FooBall"),
       QObject::tr(
-          "<h3>FooBall</h3><p>Bouncing balls on interchangeable physics backends. Run the same "
+          "<h3>FooBall %2</h3><p>Bouncing balls on interchangeable physics backends. Run the same "
           "scene on two methods side by side and watch what each does to momentum and "
           "energy.</p><p>Grown from a Year 11 Java Swing project; rebuilt in C++20 and Qt %1.</p>")
-          .arg(QString::fromLatin1(qVersion())));
+          .arg(QString::fromLatin1(qVersion()), fromView(kVersion)));
 }
 
 void showMouseAndKeys(QWidget* parent) {

@@ -2,6 +2,7 @@
 
 #include <QApplication>
 #include <QFileInfo>
+#include <QIcon>
 #include <QSettings>
 #include <cstdlib>
 #include <exception>
@@ -11,10 +12,12 @@
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
+#include "fooball/version.h"
 #include "headless_run.h"
 #include "main_window.h"
 #include "registry.h"
 #include "view_text.h"
+#include "window_settings.h"
 
 namespace {
 
@@ -116,6 +119,10 @@ int main(int argc, char* argv[]) {
     std::cout << usageText().toStdString();
     return 0;
   }
+  if (line.version) {
+    std::cout << kVersionLine << '\n';
+    return 0;
+  }
   if (!displayAvailable()) {
     if (!line.headless()) {
       std::cerr << kNoDisplay;
@@ -126,6 +133,7 @@ int main(int argc, char* argv[]) {
 
   QApplication::setOrganizationName(QStringLiteral("FooBall"));
   QApplication::setApplicationName(QStringLiteral("fooball"));
+  if (line.resetSettings) forgetWindowSettings();
   // The scene first: a bad file or preset is one line on stderr, before Qt says anything.
   StartupOptions options;
   try {
@@ -139,6 +147,12 @@ int main(int argc, char* argv[]) {
   QApplication app(argc, argv);
   qInstallMessageHandler(qtMessageHandler);
   QApplication::setApplicationDisplayName(QStringLiteral("FooBall"));
+  QApplication::setApplicationVersion(fromView(kVersion));
+  // The installed icon theme's where there is one; the copy built into the program otherwise
+  // (a build tree run, or a desktop without hicolor).
+  QApplication::setWindowIcon(
+      QIcon::fromTheme(QStringLiteral("fooball"), QIcon(QStringLiteral(":/icons/fooball.png"))));
+  QGuiApplication::setDesktopFileName(QStringLiteral("fooball"));
   try {
     MainWindow window(options);
     if (line.headless())

@@ -26,7 +26,8 @@ namespace fooball::gui {
 namespace {
 
 constexpr int kStatusMessageMs = 8000;
-constexpr int kSidebarWidth = 330;  // px
+constexpr int kSidebarWidth = 330;        // px
+constexpr QSize kDefaultSize{1440, 900};  // px, before it is fitted to the screen
 /// The charts' first share of the window's height: the box stays the largest thing.
 constexpr double kChartsShareOfHeight = 0.38;
 
@@ -54,6 +55,7 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   setCentralWidget(central);
 
   createDocks();
+  defaultLayout_ = saveState();
   frames_ = new FrameLoop(*this);
   actions_ = new WindowActions(*this);
   status_ = new StatusPanel(*statusBar(), *runs_, frames_->frameRate());
@@ -61,7 +63,7 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   wireView(*this);
   connectRuns();
 
-  resize(1440, 900);
+  resize(kDefaultSize);
   if (rememberSettings_) docksSized_ = readWindowSettings(*this);
   if (options.balls) runs_->setBallCount(*options.balls);
   // Compare mode shows the chaos baseline unless the user hides it.
@@ -244,10 +246,15 @@ void MainWindow::updateTitle() {
   setWindowTitle(tr("FooBall — %1 — %2").arg(sourceName_, runs_->labels().join(tr(" vs "))));
 }
 
-void MainWindow::showEvent(QShowEvent* event) {
-  QMainWindow::showEvent(event);
-  if (docksSized_) return;
-  docksSized_ = true;
+void MainWindow::resetLayout() {
+  showNormal();
+  restoreState(defaultLayout_);
+  resize(kDefaultSize);
+  keepFullyOnScreen(*this);
+  sizeDocks();
+}
+
+void MainWindow::sizeDocks() {
   // Once the window has its size: the view gets most of it, the charts a strip below (they
   // scroll when there are more than fit), the settings a column.
   QMetaObject::invokeMethod(
@@ -257,6 +264,19 @@ void MainWindow::showEvent(QShowEvent* event) {
         resizeDocks({sidebarDock_}, {kSidebarWidth}, Qt::Horizontal);
       },
       Qt::QueuedConnection);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  if (!shownOnce_ && rememberSettings_) {
+    // Only now does the window have a frame: fit it again, frame included.
+    QMetaObject::invokeMethod(
+        this, [this] { keepFullyOnScreen(*this); }, Qt::QueuedConnection);
+  }
+  shownOnce_ = true;
+  if (docksSized_) return;
+  docksSized_ = true;
+  sizeDocks();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -76,6 +76,9 @@ class MainWindow : public QMainWindow {
   void loadScene(const Scene& scene, const QString& presetName, const QString& sourceName);
   /// Back to the loaded scene at t = 0, keeping the settings of now.
   void restart();
+  /// View → Reset layout: both docks back in place and shown, the default window size (fitted
+  /// to the screen), the charts and settings at their first share.
+  void resetLayout();
   /// The loaded scene exactly as loaded, sliders at their defaults.
   void resetScene();
 
@@ -105,6 +108,8 @@ class MainWindow : public QMainWindow {
 
  private:
   void createDocks();
+  /// Gives the charts and the settings their first share of the window (queued: after layout).
+  void sizeDocks();
   void connectRuns();
   void resetCharts();
   void updateTitle();
@@ -113,7 +118,9 @@ class MainWindow : public QMainWindow {
   bool rememberSettings_;
   QString presetName_;
   QString sourceName_;
-  bool docksSized_ = false;  ///< the docks got their first size (or a remembered layout)
+  bool docksSized_ = false;   ///< the docks got their first size (or a remembered layout)
+  bool shownOnce_ = false;    ///< shown before: the frame fit (keepFullyOnScreen) is done
+  QByteArray defaultLayout_;  ///< saveState() of the docks as created, for View → Reset layout
 
   SimulationView* view_ = nullptr;
   CompareReadout* compareReadout_ = nullptr;

@@ -113,6 +113,9 @@ void WindowActions::createMenus() {
   QAction* chartsToggle = window_.chartsDock()->toggleViewAction();
   chartsToggle->setShortcut(QKeySequence(tr("Ctrl+2")));
   viewMenu->addActions({sidebarToggle, chartsToggle});
+  QAction* resetLayout =
+      viewMenu->addAction(tr("Reset &layout"), &window_, &MainWindow::resetLayout);
+  resetLayout->setToolTip(tr("Put the settings and charts back where they were at first start"));
   viewMenu->addSeparator();
   viewMenu->addActions({temperature_, tethers_, velocityVectors_, centreOfMass_});
   viewMenu->addSeparator();

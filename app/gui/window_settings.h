@@ -1,13 +1,30 @@
 #pragma once
 
+class QWidget;
+
 namespace fooball::gui {
 
 class MainWindow;
 
+/// The layout of the keys writeWindowSettings stores. Raise it when a key changes meaning or the
+/// window's docks change: a file of another version (an older app's, or a newer one's) still
+/// gives its plain values, each checked and clamped, but not its window geometry and dock layout,
+/// which only make sense to the window that wrote them.
+inline constexpr int kSettingsVersion = 1;
+
 /// Restores what the user chose last time (QSettings): window geometry and dock layout, drawing
-/// options, compare layout, mouse tool and speed. Returns whether a dock layout was restored.
+/// options, compare layout, mouse tool and speed, then keeps the window fully on a screen.
+/// Returns whether a dock layout was restored.
 bool readWindowSettings(MainWindow& window);
 /// Remembers the same, plus run 0's backend and the preset, for the next start.
 void writeWindowSettings(const MainWindow& window);
+/// Forgets everything the app remembers (fooball --reset-settings): the next start is a first
+/// start.
+void forgetWindowSettings();
+
+/// Moves `window`, and shrinks it where it is larger, so that all of it lies on the available
+/// area (without panels) of the screen it is mostly on. A remembered geometry may come from
+/// another monitor layout, and a default size from a larger screen.
+void keepFullyOnScreen(QWidget& window);
 
 }  // namespace fooball::gui

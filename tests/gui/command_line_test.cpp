@@ -34,6 +34,13 @@ TEST(CommandLine, ReadsDrawingOptionsAndAttractors) {
   EXPECT_EQ(line.attractors[1], (Vec2{1.5, 2.0}));
 }
 
+TEST(CommandLine, ReadsVersionAndResetSettings) {
+  EXPECT_TRUE(parse({"--version"}).version);
+  EXPECT_TRUE(parse({"--reset-settings"}).resetSettings);
+  const CommandLine line = parse({"--preset", "gas"});
+  EXPECT_FALSE(line.version || line.resetSettings);
+}
+
 TEST(CommandLine, NoArgumentsIsAnInteractiveRun) {
   const CommandLine line = parse({});
   EXPECT_FALSE(line.headless());

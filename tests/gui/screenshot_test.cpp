@@ -4,8 +4,11 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTemporaryDir>
+#include <string>
 #include <utility>
 #include <vector>
+
+#include "fooball/version.h"
 
 namespace {
 
@@ -84,6 +87,13 @@ TEST(FooballBinary, BadArgumentsGiveOneLineAndExit2) {
     EXPECT_TRUE(outcome.err.startsWith(QStringLiteral("fooball: error: ")))
         << outcome.err.toStdString();
   }
+}
+
+TEST(FooballBinary, VersionPrintsTheProjectVersionWithoutADisplay) {
+  const Outcome outcome = runFooball({QStringLiteral("--version")}, {});
+  EXPECT_EQ(outcome.exitCode, 0) << outcome.err.toStdString();
+  EXPECT_EQ(outcome.out.toStdString(), std::string(fooball::kVersionLine) + "\n");
+  EXPECT_TRUE(outcome.err.isEmpty()) << outcome.err.toStdString();
 }
 
 }  // namespace
