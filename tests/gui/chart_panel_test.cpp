@@ -8,6 +8,7 @@
 #include <QFile>
 #include <QImage>
 #include <QLogValueAxis>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <algorithm>
 #include <array>
@@ -137,14 +138,44 @@ TEST_F(ChartPanelTest, SingleModeDrawsRunZeroOnly) {
   EXPECT_TRUE(panel.runLegendText().isEmpty());
 }
 
-/// Checks that `points` are at the sample times of a run fed every `dt` from 0 and that each y
-/// is what `expected` says for that time.
+/// The power of ten an axis title names ("residual (10⁻¹⁵ J)", "residual / |E₀| (×10³)"), as a
+/// factor: what the axis' numbers are multiplied by. 1 when it names none.
+double titleFactor(const QString& title) {
+  static const QString kDigits = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+  const qsizetype at = title.indexOf(QStringLiteral("10"));
+  if (at < 0) return 1.0;
+  int exponent = 0;
+  int sign = 1;
+  bool anyDigit = false;
+  for (qsizetype i = at + 2; i < title.size(); ++i) {
+    if (title[i] == QChar(u'⁻') && !anyDigit) {
+      sign = -1;
+    } else if (const qsizetype digit = kDigits.indexOf(title[i]); digit >= 0) {
+      exponent = 10 * exponent + int(digit);
+      anyDigit = true;
+    } else {
+      break;
+    }
+  }
+  return anyDigit ? std::pow(10.0, sign * exponent) : 1.0;
+}
+
+/// Checks that `points` are at the sample times of a run fed every `dt` from 0 and that each y,
+/// times the axis' `factor` (titleFactor), is what `expected` says for that time: exactly when the
+/// axis shows the values as they are, else to the two roundings of dividing and multiplying.
 void expectPlotted(const QList<QPointF>& points, int count, double dt,
-                   const std::function<double(double)>& expected, const std::string& what) {
+                   const std::function<double(double)>& expected, const std::string& what,
+                   double factor = 1.0) {
   ASSERT_EQ(points.size(), count) << what;
   for (qsizetype i = 0; i < points.size(); ++i) {
     EXPECT_EQ(points[i].x(), static_cast<double>(i) * dt) << what << " point " << i;
-    EXPECT_EQ(points[i].y(), expected(points[i].x())) << what << " at t = " << points[i].x();
+    const double want = expected(points[i].x());
+    if (factor == 1.0) {
+      EXPECT_EQ(points[i].y(), want) << what << " at t = " << points[i].x();
+    } else {
+      EXPECT_NEAR(points[i].y() * factor, want, 4e-16 * std::abs(want))
+          << what << " at t = " << points[i].x();
+    }
   }
 }
 
@@ -190,7 +221,8 @@ TEST_F(FourRunsAndBaseline, EachRunPlotsTheMetricsItWasFed) {
         [run](double time) { return metricsAt(time, run).sums.totalEnergy(); }, name + " total");
     expectPlotted(
         panel.displayedPoints(ChartPanel::kResidualChart, run, 0), kSamples, kDt,
-        [run](double time) { return metricsAt(time, run).energyResidual; }, name + " residual");
+        [run](double time) { return metricsAt(time, run).energyResidual; }, name + " residual",
+        titleFactor(panel.displayedValueAxisTitle(ChartPanel::kResidualChart)));
     if (run == 0) {
       EXPECT_TRUE(panel.displayedPoints(ChartPanel::kDivergenceChart, 0).isEmpty());
     } else {
@@ -198,6 +230,73 @@ TEST_F(FourRunsAndBaseline, EachRunPlotsTheMetricsItWasFed) {
           panel.displayedPoints(ChartPanel::kDivergenceChart, run), kSamples, kDt,
           [run](double time) { return divergenceAt(time, run).rmsPositionDifference; },
           name + " divergence");
+    }
+  }
+}
+
+/// A residual of `size` J (either sign), wandering between 0.2 and 1.8 × size as a method's error
+/// does, with E₀ = 10 J for the relative view.
+Metrics residualOfSize(double time, double size) {
+  Metrics metrics = metricsAt(time);
+  metrics.energyResidual = size * (1.0 + 0.8 * std::sin(3.0 * time));
+  metrics.sums.kineticEnergy = 10.0;
+  metrics.sums.potentialEnergy = 0.0;
+  return metrics;
+}
+
+/// What a user reads off the residual chart: every plotted point times the power of ten in the
+/// axis title is the residual it was fed, the axis (times the same power) holds the data snugly,
+/// and its tick labels are whole numbers, 0 among them when the range spans it, never "-0".
+void expectResidualChartReads(ChartPanel& panel, double size, int samples, double dt,
+                              bool relative) {
+  const std::string what = (relative ? "relative residual " : "residual ") + std::to_string(size);
+  const auto expected = [&](double time) {
+    const double residual = residualOfSize(time, size).energyResidual;
+    return relative ? residual / 10.0 : residual;
+  };
+  const QString title = panel.displayedValueAxisTitle(ChartPanel::kResidualChart);
+  const double factor = titleFactor(title);
+  // The chart's curves: the residual, then the relative residual.
+  expectPlotted(panel.displayedPoints(ChartPanel::kResidualChart, 0, relative ? 1 : 0), samples, dt,
+                expected, what + " (" + title.toStdString() + ")", factor);
+  double low = HUGE_VAL;
+  double high = -HUGE_VAL;
+  for (int i = 0; i < samples; ++i) {
+    low = std::min(low, expected(i * dt));
+    high = std::max(high, expected(i * dt));
+  }
+  const auto [axisMin, axisMax] = panel.displayedYRange(ChartPanel::kResidualChart);
+  EXPECT_LE(axisMin * factor, low) << what;
+  EXPECT_GE(axisMax * factor, high) << what;
+  // Snug: the data fill a third of the axis at least, so no axis of ±1 J for 1e-14 J.
+  EXPECT_GE(high - low, (axisMax - axisMin) * factor / 3.0)
+      << what << " on " << axisMin << ".." << axisMax << " × " << factor;
+  const QStringList labels = panel.displayedValueTickLabels(ChartPanel::kResidualChart);
+  EXPECT_GE(labels.size(), 2) << what;
+  const QRegularExpression wholeNumber(QStringLiteral("^-?[1-9][0-9]{0,4}$|^0$"));
+  for (const QString& label : labels)
+    EXPECT_TRUE(wholeNumber.match(label).hasMatch())
+        << what << ": label '" << label.toStdString() << "' on " << title.toStdString();
+  if (axisMin < 0.0 && axisMax > 0.0) {
+    EXPECT_TRUE(labels.contains(QStringLiteral("0"))) << what;
+  }
+}
+
+TEST_F(ChartPanelTest, ResidualChartReadsTheTrueValuesFromTinyToHuge) {
+  constexpr int kSamples = 300;
+  constexpr double kDt = 1.0 / 60.0;
+  for (const bool relative : {false, true}) {
+    for (const double magnitude :
+         {1e-16, 1e-14, 3e-12, 1e-9, 2e-6, 1e-3, 0.5, 1.0, 70.0, 1e3, 1e6}) {
+      for (const double sign : {1.0, -1.0}) {
+        panel.reset({"elastic"});
+        toggleNamed(panel, "relativeResidualToggle")->setChecked(relative);
+        for (int i = 0; i < kSamples; ++i)
+          panel.addSample(0, residualOfSize(i * kDt, sign * magnitude), Divergence{});
+        panel.refresh();
+        QApplication::processEvents();  // Qt Charts lays out its labels and titles then
+        expectResidualChartReads(panel, sign * magnitude, kSamples, kDt, relative);
+      }
     }
   }
 }

@@ -99,6 +99,37 @@ AxisScale scrollingTimeScale(double start, double end, double window) {
   return {axisEnd - window, axisEnd, niceStep(window / kTimeTicks)};
 }
 
+int displayExponent(const AxisScale& scale) {
+  const double magnitude = std::max(std::abs(scale.min), std::abs(scale.max));
+  if (!(scale.tickInterval > 0.0) || !std::isfinite(scale.tickInterval)) return 0;
+  if (scale.tickInterval >= 1.0 && magnitude < 1e5) return 0;
+  // The nudge keeps log10(1e-15) = −14.9999… from giving 10⁻¹⁵ steps of 10 × 10⁻¹⁶.
+  return static_cast<int>(std::floor(std::log10(scale.tickInterval) + 1e-9));
+}
+
+AxisScale inDisplayUnits(const AxisScale& scale, int exponent) {
+  if (exponent == 0) return scale;
+  // Multiples of the interval by construction (followValues rounds its ends out to ticks): in
+  // these units whole numbers up to rounding, which goes.
+  const double unit = std::pow(10.0, exponent);
+  return {std::round(scale.min / unit), std::round(scale.max / unit),
+          std::round(scale.tickInterval / unit)};
+}
+
+std::string unitSuffix(const std::string& unit, int exponent) {
+  std::string power;
+  if (exponent != 0) {
+    static constexpr const char* kSuperscriptDigits[] = {"⁰", "¹", "²", "³", "⁴",
+                                                         "⁵", "⁶", "⁷", "⁸", "⁹"};
+    power = "10";
+    if (exponent < 0) power += "⁻";
+    for (const char digit : std::to_string(std::abs(exponent)))
+      power += kSuperscriptDigits[digit - '0'];
+  }
+  if (unit.empty()) return power.empty() ? "" : " (×" + power + ")";
+  return " (" + (power.empty() ? unit : power + " " + unit) + ")";
+}
+
 std::string tickLabelFormat(const AxisScale& scale) {
   const double magnitude = std::max(std::abs(scale.min), std::abs(scale.max));
   // The nudge keeps log10(0.001) = −2.9999… from asking for a needless extra digit.

@@ -41,11 +41,11 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   charts_[kMomentumChart] = new TimeChart(
       tr("Momentum"), {Quantity::MomentumX, Quantity::MomentumY, Quantity::MomentumMagnitude},
       markers);
-  charts_[kMomentumChart]->setValueAxisTitle(tr("momentum (N·s)"));
+  charts_[kMomentumChart]->setValueAxisTitle(tr("momentum"), tr("N·s"));
   charts_[kEnergyChart] = new TimeChart(
       tr("Energy"), {Quantity::KineticEnergy, Quantity::PotentialEnergy, Quantity::TotalEnergy},
       markers);
-  charts_[kEnergyChart]->setValueAxisTitle(tr("energy (J)"));
+  charts_[kEnergyChart]->setValueAxisTitle(tr("energy"), tr("J"));
   charts_[kResidualChart] =
       new TimeChart(tr("Energy budget residual: the method's own error"),
                     {Quantity::EnergyResidual, Quantity::RelativeEnergyResidual}, markers);
@@ -54,7 +54,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   charts_[kDivergenceChart] = new TimeChart(tr("Divergence from run 0: RMS position difference"),
                                             {Quantity::RmsPositionDifference}, markers,
                                             TimeChart::ValueAxisKind::Logarithmic);
-  charts_[kDivergenceChart]->setValueAxisTitle(tr("RMS Δposition (m)"));
+  charts_[kDivergenceChart]->setValueAxisTitle(tr("RMS Δposition"), tr("m"));
 
   auto* splitter = new QSplitter(Qt::Vertical, this);
   splitter_ = splitter;
@@ -314,7 +314,8 @@ void ChartPanel::applyToggles() {
   TimeChart* residual = charts_[kResidualChart];
   residual->setQuantityShown(Quantity::EnergyResidual, residualShown && !relative);
   residual->setQuantityShown(Quantity::RelativeEnergyResidual, residualShown && relative);
-  residual->setValueAxisTitle(relative ? tr("residual / |E₀|") : tr("residual (J)"));
+  residual->setValueAxisTitle(relative ? tr("residual / |E₀|") : tr("residual"),
+                              relative ? QString() : tr("J"));
   charts_[kDivergenceChart]->setQuantityShown(Quantity::RmsPositionDifference,
                                               divergenceToggle_->isChecked());
 
@@ -447,6 +448,16 @@ QPen ChartPanel::displayedPen(int chart, int runIndex, int curve) const {
 std::pair<double, double> ChartPanel::displayedYRange(int chart) const {
   if (chart < 0 || chart >= kChartCount) return {0.0, 0.0};
   return charts_[chart]->valueRange();
+}
+
+QString ChartPanel::displayedValueAxisTitle(int chart) const {
+  if (chart < 0 || chart >= kChartCount) return {};
+  return charts_[chart]->valueAxisTitle();
+}
+
+QStringList ChartPanel::displayedValueTickLabels(int chart) const {
+  if (chart < 0 || chart >= kChartCount || !isChartShown(charts_[chart])) return {};
+  return charts_[chart]->valueTickLabels();
 }
 
 bool ChartPanel::chartShown(int chart) const {

@@ -104,6 +104,9 @@ class ChartPanel : public QWidget {
   QList<QPointF> displayedPoints(int chart, int runIndex, int curve = 0) const;
   QPen displayedPen(int chart, int runIndex, int curve = 0) const;
   std::pair<double, double> displayedYRange(int chart) const;
+  /// `chart`'s value axis title and tick labels as drawn (TimeChart::valueTickLabels).
+  QString displayedValueAxisTitle(int chart) const;
+  QStringList displayedValueTickLabels(int chart) const;
   /// Whether `chart` is on screen: it has something to show and its toggles are on.
   bool chartShown(int chart) const;
   /// The run legend above the charts, as plain text (empty when it is hidden: one run).

@@ -3,6 +3,8 @@
 #include <QChart>
 #include <QFontMetricsF>
 #include <QGraphicsLayout>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QLogValueAxis>
@@ -69,7 +71,7 @@ void applyScale(QLogValueAxis* axis, const LogAxisScale& scale) {
   }
 }
 
-void applyScale(QValueAxis* axis, const AxisScale& scale) {
+void applyScale(QValueAxis* axis, const AxisScale& scale, const QString& labelFormat) {
   // Every change relays the ticks out: in between, the new range must not meet the old, finer
   // interval (a range 10⁵ times wider would create 10⁵ tick items). Widen the interval before
   // the range, narrow it after.
@@ -86,7 +88,7 @@ void applyScale(QValueAxis* axis, const AxisScale& scale) {
     axis->setRange(scale.min, scale.max);
     axis->setTickInterval(scale.tickInterval);
   }
-  axis->setLabelFormat(QString::fromStdString(tickLabelFormat(scale)));
+  axis->setLabelFormat(labelFormat);
 }
 
 }  // namespace
@@ -268,7 +270,16 @@ bool TimeChart::showsAnyQuantity() const {
                      [this](Quantity quantity) { return isShown(quantity); });
 }
 
-void TimeChart::setValueAxisTitle(const QString& title) {
+void TimeChart::setValueAxisTitle(const QString& name, const QString& unit) {
+  valueName_ = name;
+  valueUnit_ = unit;
+  updateValueAxisTitle();
+}
+
+void TimeChart::updateValueAxisTitle() {
+  const QString title =
+      valueName_ + QString::fromStdString(unitSuffix(valueUnit_.toStdString(), displayExponent_));
+  if (title == valueAxis_->titleText()) return;
   valueAxis_->setTitleText(title);
   updateMinimumHeight();
 }
@@ -325,13 +336,27 @@ void TimeChart::redraw(std::span<const SampleHistory* const> histories,
     // or of an axis: empty while the axes change, each curve is built once, by replace().
     curve.series->clear();
   }
-  applyScale(timeAxis_, timeScale);
+  applyScale(timeAxis_, timeScale, QString::fromStdString(tickLabelFormat(timeScale)));
   shownValues_ = shownValues;
   fitValueAxis();
-  for (Curve& curve : curves_) {
-    if (isShown(curve.quantity)) curve.series->replace(curve.points);
-  }
+  showCurves();
   markerOverlay_->update();
+}
+
+void TimeChart::showCurves() {
+  const double unit = std::pow(10.0, displayExponent_);
+  for (Curve& curve : curves_) {
+    if (!isShown(curve.quantity)) continue;
+    if (displayExponent_ == 0) {
+      curve.series->replace(curve.points);
+      continue;
+    }
+    scaledPoints_.clear();
+    scaledPoints_.reserve(curve.points.size());
+    for (const QPointF& point : curve.points)
+      scaledPoints_.append(QPointF(point.x(), point.y() / unit));
+    curve.series->replace(scaledPoints_);
+  }
 }
 
 int TimeChart::maxPointsPerCurve() const {
@@ -355,7 +380,14 @@ void TimeChart::fitValueAxis() {
     applyScale(logAxis_, *logValueScale_);
   } else {
     valueScale_ = followValues(shownValues_, valueScale_, ticks);
-    applyScale(linearAxis_, *valueScale_);
+    const int exponent = displayExponent(*valueScale_);
+    // Whole-number ticks in these units (displayExponent): no decimals to show.
+    applyScale(linearAxis_, inDisplayUnits(*valueScale_, exponent), QStringLiteral("%.0f"));
+    if (exponent != displayExponent_) {
+      displayExponent_ = exponent;
+      updateValueAxisTitle();
+      showCurves();
+    }
   }
 }
 
@@ -389,6 +421,31 @@ QList<QPointF> TimeChart::points(int run, int quantityIndex) const {
 QPen TimeChart::pen(int run, int quantityIndex) const {
   const Curve* curve = findCurve(run, quantityIndex);
   return curve != nullptr ? curve->series->pen() : QPen(Qt::NoPen);
+}
+
+QString TimeChart::valueAxisTitle() const {
+  return valueAxis_->titleText();
+}
+
+QStringList TimeChart::valueTickLabels() const {
+  // Qt Charts draws each label as a text item of its own; the value axis' are the ones beside
+  // the plot on the left, upright (its title there runs up the side).
+  const QRectF plot = chart_->plotArea();
+  std::vector<std::pair<double, QString>> labels;
+  for (const QGraphicsItem* item : chart_->scene()->items()) {
+    const auto* text = qgraphicsitem_cast<const QGraphicsTextItem*>(item);
+    if (text == nullptr || !text->isVisible()) continue;
+    const QPointF centre = text->sceneBoundingRect().center();
+    const bool beside = centre.x() < plot.left() && centre.y() >= plot.top() - 1.0 &&
+                        centre.y() <= plot.bottom() + 1.0;
+    if (beside && text->rotation() == 0.0) labels.emplace_back(centre.y(), text->toPlainText());
+  }
+  std::sort(labels.begin(), labels.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  QStringList texts;
+  for (const auto& label : labels)
+    texts.append(label.second);
+  return texts;
 }
 
 std::pair<double, double> TimeChart::valueRange() const {

@@ -64,7 +64,9 @@ class TimeChart : public QChartView {
   void setQuantityShown(Quantity quantity, bool shown);
   bool showsAnyQuantity() const;
 
-  void setValueAxisTitle(const QString& title);
+  /// The value axis' title: `name` and, in brackets, `unit` ("J"; "" for a ratio) with the power
+  /// of ten the values are drawn in when they are tiny or huge (displayExponent).
+  void setValueAxisTitle(const QString& name, const QString& unit);
   /// The time axis' tick labels and title. The panel's charts share one time axis, so only the
   /// bottom one labels it (the others keep its grid lines): room for taller plots.
   void setTimeAxisLabelsShown(bool shown);
@@ -80,10 +82,15 @@ class TimeChart : public QChartView {
   /// Points in the curves of `run` (the largest count over its shown quantities).
   int pointCount(int run) const;
   /// The points `run`'s curve of the chart's `quantityIndex`-th quantity holds (none when it
-  /// has no such curve or it is hidden), and its pen (Qt::NoPen then).
+  /// has no such curve or it is hidden), in the value axis' units (see the axis title), and its
+  /// pen (Qt::NoPen then).
   QList<QPointF> points(int run, int quantityIndex) const;
   QPen pen(int run, int quantityIndex) const;
-  /// The value axis' range, as last drawn.
+  /// The value axis as a user reads it: its title, and the tick labels drawn in the chart's
+  /// scene, top to bottom.
+  QString valueAxisTitle() const;
+  QStringList valueTickLabels() const;
+  /// The value axis' range, as last drawn, in its units (see the axis title).
   std::pair<double, double> valueRange() const;
   int visibleMarkerCount() const;
 
@@ -100,7 +107,7 @@ class TimeChart : public QChartView {
     Quantity quantity;
     int run;
     QLineSeries* series;
-    QList<QPointF> points;  ///< reused on every redraw
+    QList<QPointF> points;  ///< in the quantity's own units; reused on every redraw
   };
 
   /// An empty series that only puts an entry in the legend: in compare mode a quantity's line
@@ -123,8 +130,12 @@ class TimeChart : public QChartView {
   /// Tall enough for the title, legend, tick labels and axis titles shown, and a plot as tall
   /// as the value axis' title: a shorter chart elides its labels to "…".
   void updateMinimumHeight();
-  /// Fits the value axis to shownValues_ for the plot's current height.
+  /// Fits the value axis to shownValues_ for the plot's current height; a new power of ten
+  /// redraws the curves in it.
   void fitValueAxis();
+  /// Hands every shown curve's points to its series, divided by 10^displayExponent_.
+  void showCurves();
+  void updateValueAxisTitle();
 
   QChart* chart_;
   QValueAxis* timeAxis_;
@@ -141,7 +152,11 @@ class TimeChart : public QChartView {
   ValueRange shownValues_;  ///< of the shown curves, as last drawn
   std::optional<AxisScale> valueScale_;
   std::optional<LogAxisScale> logValueScale_;
-  int valueTicks_ = 0;  ///< tick intervals the value scale was chosen for
+  int valueTicks_ = 0;           ///< tick intervals the value scale was chosen for
+  int displayExponent_ = 0;      ///< the linear value axis shows values in units of 10^this
+  QList<QPointF> scaledPoints_;  ///< one curve's points in those units; reused
+  QString valueName_;
+  QString valueUnit_;
   std::optional<PlotInsets> naturalPlotInsets_;
   PlotInsets extraMargins_;
 };
