@@ -42,7 +42,7 @@ void FrameLoop::advance(double elapsedSeconds) {
     }
     if (++framesSinceReadout_ >= kFramesPerReadout) {
       framesSinceReadout_ = 0;
-      window_.showDivergence();
+      window_.showReadouts();
       if (runs.group().selected()) window_.showSelectedBall();
     }
   }

@@ -13,6 +13,7 @@
 #include "compare_readout.h"
 #include "frame_loop.h"
 #include "run_controller.h"
+#include "run_counters.h"
 #include "run_list_editor.h"
 #include "settings_sidebar.h"
 #include "sidebar_wiring.h"
@@ -123,7 +124,7 @@ void MainWindow::connectRuns() {
   connect(runs_.get(), &RunController::ballsChanged, this, [this] {
     sidebar_->showBallCount(runs_->group().ballCount());
     showSelectedBall();
-    showDivergence();
+    showReadouts();
     view_->update();
   });
   connect(runs_.get(), &RunController::runsChanged, this, [this] {
@@ -150,16 +151,26 @@ void MainWindow::showRuns() {
   sidebar_->runList()->showRuns(runs_->group());
   compareReadout_->setVisible(runs_->comparing() || runs_->group().hasBaseline());
   compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
-  showDivergence();
+  sidebar_->counters()->showRuns(runs_->labels());
+  showReadouts();
 }
 
-void MainWindow::showDivergence() {
-  if (compareReadout_->isHidden()) return;
+void MainWindow::showReadouts() {
   const RunGroup& group = runs_->group();
-  std::vector<Divergence> divergences;
-  for (std::size_t i = 0; i < group.runCount(); ++i)
-    divergences.push_back(group.divergence(i));
-  compareReadout_->showDivergences(divergences, group.baselineDivergence());
+  if (!compareReadout_->isHidden()) {
+    std::vector<Divergence> divergences;
+    for (std::size_t i = 0; i < group.runCount(); ++i)
+      divergences.push_back(group.divergence(i));
+    compareReadout_->showDivergences(divergences, group.baselineDivergence());
+  }
+  // The deepest-overlap search is O(N log N): only for a table someone can see.
+  RunCounters* counters = sidebar_->counters();
+  if (!sidebarDock_->isHidden() && counters->isVisible()) {
+    std::vector<Metrics> metrics;
+    for (std::size_t i = 0; i < group.runCount(); ++i)
+      metrics.push_back(group.run(i).metrics());
+    counters->showMetrics(metrics);
+  }
 }
 
 void MainWindow::syncSidebar() {

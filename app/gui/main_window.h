@@ -87,8 +87,9 @@ class MainWindow : public QMainWindow {
   void advanceFrame(double elapsedSeconds);
   /// Feeds every run's metrics and divergence to the charts now.
   void sampleCharts();
-  /// Shows every run's divergence in the readout now (also while paused).
-  void showDivergence();
+  /// Shows every run's divergence in the compare readout and its counters in the sidebar now
+  /// (also while paused), each only while it is on screen.
+  void showReadouts();
   /// Real-time frames from a timer (the interactive app; --frames drives advanceFrame itself).
   void startLiveUpdates();
   void updateStatusBar();

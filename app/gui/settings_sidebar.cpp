@@ -18,6 +18,7 @@
 #include "fooball/presets.h"
 #include "log_slider.h"
 #include "number_format.h"
+#include "run_counters.h"
 #include "run_list_editor.h"
 #include "view_text.h"
 
@@ -60,6 +61,8 @@ SettingsSidebar::SettingsSidebar(QWidget* parent) : QWidget(parent) {
   layout->addWidget(createSceneGroup());
   runList_ = new RunListEditor;
   layout->addWidget(runList_);
+  counters_ = new RunCounters;
+  layout->addWidget(counters_);
   layout->addWidget(createForcesGroup());
   layout->addWidget(createCollisionsGroup());
   layout->addWidget(createMouseGroup());

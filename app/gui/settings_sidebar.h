@@ -20,6 +20,7 @@ namespace fooball::gui {
 
 class BallInspector;
 class LogSlider;
+class RunCounters;
 class RunListEditor;
 
 /// Every setting of the sandbox, each live and showing its value and unit: the scene and its
@@ -36,6 +37,7 @@ class SettingsSidebar : public QWidget {
   static constexpr int kMaxBallCount = 1'000'000;
 
   RunListEditor* runList() const { return runList_; }
+  RunCounters* counters() const { return counters_; }
   BallInspector* inspector() const { return inspector_; }
   LogSlider* gravitySlider() const { return gravity_; }
   LogSlider* airResistanceSlider() const { return airResistance_; }
@@ -90,6 +92,7 @@ class SettingsSidebar : public QWidget {
   QComboBox* preset_;
   QSpinBox* ballCount_;
   RunListEditor* runList_;
+  RunCounters* counters_;
   LogSlider* gravity_;
   LogSlider* airResistance_;
   LogSlider* strength_;

@@ -39,7 +39,7 @@ void WindowActions::createActions() {
   connect(step_, &QAction::triggered, this, [this] {
     window_.runs().stepOnce();
     window_.sampleCharts();
-    window_.showDivergence();
+    window_.showReadouts();
     window_.showSelectedBall();
     window_.view()->update();
     window_.updateStatusBar();

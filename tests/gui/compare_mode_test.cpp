@@ -4,6 +4,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QToolButton>
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include "charts/chart_panel.h"
 #include "compare_readout.h"
 #include "gui_fixture.h"
+#include "run_counters.h"
 #include "run_list_editor.h"
 #include "settings_sidebar.h"
 #include "window_actions.h"
@@ -74,7 +76,7 @@ TEST_F(CompareMode, SameSpecStaysIdenticalAndTheBaselineDepartsFromIt) {
 TEST_F(CompareMode, TheReadoutShowsTheRunGroupsOwnDivergenceNumbers) {
   open(fooball::testing::gas(80), "elastic", {"box2d"});
   frames(120);
-  window->showDivergence();
+  window->showReadouts();
   const Divergence divergence = group().divergence(1);
   EXPECT_GT(divergence.maxPositionDifference, 0.0);
   EXPECT_LE(divergence.rmsPositionDifference, divergence.maxPositionDifference);
@@ -83,6 +85,69 @@ TEST_F(CompareMode, TheReadoutShowsTheRunGroupsOwnDivergenceNumbers) {
   // The readout's figures are the group's, to the digits shown (3 significant).
   const QString rms = QString::number(divergence.rmsPositionDifference, 'g', 3);
   EXPECT_TRUE(text.contains(rms)) << text.toStdString() << " lacks " << rms.toStdString();
+}
+
+/// The readout's RMS figure for run 1 as a number (it shows "RMS 0.0123 m" or "RMS 1.23e-07 m").
+double readoutRms(const CompareReadout& readout) {
+  const QStringList lines = readout.text().split(QLatin1Char('\n'));
+  if (lines.size() < 2) return std::nan("");
+  const qsizetype at = lines[1].indexOf(QStringLiteral("RMS "));
+  return at < 0 ? std::nan("") : lines[1].mid(at + 4).section(QLatin1Char(' '), 0, 0).toDouble();
+}
+
+void expectReadoutShows(const CompareReadout& readout, const Divergence& divergence,
+                        const char* when) {
+  const double rms = divergence.rmsPositionDifference;
+  // The figures have 3 or 4 significant digits.
+  EXPECT_NEAR(readoutRms(readout), rms, 5e-3 * rms) << when << ": " << readout.text().toStdString();
+}
+
+TEST_F(CompareMode, TheReadoutFollowsRestartAndSingleStepsWhilePaused) {
+  open(fooball::testing::gas(80), "elastic", {"box2d"});
+  frames(120);
+  window->actions().pause()->trigger();
+  ASSERT_TRUE(runs().paused());
+  const double before = group().divergence(1).rmsPositionDifference;
+  expectReadoutShows(*window->compareReadout(), group().divergence(1), "paused");
+
+  window->restart();
+  const double restarted = group().divergence(1).rmsPositionDifference;
+  ASSERT_LT(restarted, 1e-3 * before) << "at t = 0 only Box2D's float rounding differs";
+  expectReadoutShows(*window->compareReadout(), group().divergence(1), "after Restart");
+
+  for (int step = 0; step < 3; ++step) {
+    window->actions().step()->trigger();
+    expectReadoutShows(*window->compareReadout(), group().divergence(1), "after Single step");
+  }
+  EXPECT_NE(group().divergence(1).rmsPositionDifference, restarted) << "the steps moved the runs";
+}
+
+TEST_F(CompareMode, TheCountersShowEachRunsOwnCollisionsBouncesOverlapAndEscapes) {
+  open(fooball::testing::gas(80), "elastic", {"exact", "box2d"});
+  frames(90);
+  window->showReadouts();
+  const QStringList lines = window->sidebar()->counters()->text().split(QLatin1Char('\n'));
+  ASSERT_EQ(lines.size(), 3) << window->sidebar()->counters()->text().toStdString();
+  const QRegularExpression row(QStringLiteral(
+      "^(.+): ([0-9,]+) ball–ball, ([0-9,]+) wall, overlap (.+), ([0-9,]+) escaped$"));
+  for (int run = 0; run < 3; ++run) {
+    const Metrics metrics = runs().run(run).metrics();
+    const QRegularExpressionMatch match = row.match(lines[run]);
+    ASSERT_TRUE(match.hasMatch()) << lines[run].toStdString();
+    const auto count = [&](int group) {
+      return match.captured(group).remove(QLatin1Char(',')).toULongLong();
+    };
+    EXPECT_EQ(match.captured(1), runs().label(run));
+    EXPECT_GT(metrics.ballCollisions, 0u) << "80 balls in 1.5 s collide";
+    EXPECT_EQ(count(2), metrics.ballCollisions) << lines[run].toStdString();
+    EXPECT_EQ(count(3), metrics.wallCollisions) << lines[run].toStdString();
+    EXPECT_EQ(count(5), metrics.escaped) << lines[run].toStdString();
+    const QString overlap = match.captured(4);
+    const double shown = overlap == QStringLiteral("0")
+                             ? 0.0
+                             : overlap.section(QLatin1Char(' '), 0, 0).toDouble() / 100.0;
+    EXPECT_NEAR(shown, metrics.maxOverlap, 0.05 * metrics.maxOverlap) << lines[run].toStdString();
+  }
 }
 
 TEST_F(CompareMode, FourRunsOverlayEveryChartAndSideBySideGivesEachRunATile) {
