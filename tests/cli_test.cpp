@@ -212,6 +212,12 @@ TEST_F(CliTest, VersionPrintsTheProjectVersionAndExitsZero) {
               ::testing::MatchesRegex("fooball [0-9]+\\.[0-9]+\\.[0-9]+"));
 }
 
+TEST_F(CliTest, AnUnknownCommandIsNamedWithTheKnownOnes) {
+  const std::string message = expectBadInput({"frobnicate", "--preset", "gas"});
+  EXPECT_THAT(message, AllOf(HasSubstr("unknown command 'frobnicate'"), HasSubstr("compare"),
+                             HasSubstr("failure-map")));
+}
+
 TEST_F(CliTest, MissingSubcommandExitsTwo) {
   expectBadInput({});
 }

@@ -307,6 +307,14 @@ int main(int argc, char** argv) {
     // --help and --version arrive as "success" errors; CLI11 prints them. Real errors get our one
     // line instead of CLI11's help dump.
     if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(error);
+    // CLI11 says only "A subcommand is required" for a word that names none: name the word.
+    if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty()) {
+      std::string known;
+      for (const CLI::App* subcommand : app.get_subcommands({}))
+        known += (known.empty() ? "" : ", ") + subcommand->get_name();
+      return reportError("unknown command '" + std::string(argv[1]) + "' (known: " + known + ")",
+                         kExitBadInput);
+    }
     return reportError(std::string(error.what()) + " (see '" + kProgramName + " --help')",
                        kExitBadInput);
   }

@@ -4,6 +4,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <algorithm>
 #include <climits>
@@ -18,6 +19,42 @@ namespace {
 int toInt(double value) {
   return static_cast<int>(std::clamp(value, double(INT_MIN), double(INT_MAX)));
 }
+
+/// "velocity_iterations" → "Velocity iterations": the option key (in the tooltip) as words.
+QString humanLabel(const QString& key) {
+  QString label = key;
+  label.replace(QLatin1Char('_'), QLatin1Char(' '));
+  if (!label.isEmpty()) label[0] = label[0].toUpper();
+  return label;
+}
+
+/// A real-valued option field that shows six significant digits, in exponent form where the
+/// value needs it ("1e-06" s, not "0.0000"), and reads either form back.
+class RealOptionBox : public QDoubleSpinBox {
+ public:
+  RealOptionBox() {
+    // QDoubleSpinBox rounds every value to its decimals: enough for the smallest doubles.
+    setDecimals(323);
+  }
+
+ protected:
+  QString textFromValue(double value) const override { return locale().toString(value, 'g', 6); }
+  double valueFromText(const QString& text) const override {
+    return locale().toDouble(text.trimmed());
+  }
+  QValidator::State validate(QString& text, int&) const override {
+    const QString trimmed = text.trimmed();
+    bool ok = false;
+    const double value = locale().toDouble(trimmed, &ok);
+    if (ok)
+      return value >= minimum() && value <= maximum() ? QValidator::Acceptable
+                                                      : QValidator::Intermediate;
+    // Part of a number still being typed: "1e-", "-", "0.".
+    static const QRegularExpression partial(
+        QStringLiteral("^[-+]?[0-9]*[.,]?[0-9]*([eE][-+]?[0-9]*)?$"));
+    return partial.match(trimmed).hasMatch() ? QValidator::Intermediate : QValidator::Invalid;
+  }
+};
 
 }  // namespace
 
@@ -51,11 +88,7 @@ void BackendOptionsForm::showOptions(const Backend& backend) {
               [this, name](int chosen) { emit optionChanged(name, chosen); });
       field = spin;
     } else {
-      auto* spin = new QDoubleSpinBox;
-      // Enough decimals to show the smallest allowed value.
-      const int decimals =
-          spec.min > 0.0 ? 2 - static_cast<int>(std::floor(std::log10(spec.min))) : 4;
-      spin->setDecimals(std::clamp(decimals, 3, 10));
+      auto* spin = new RealOptionBox;
       spin->setRange(spec.min, spec.max);
       spin->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
       spin->setValue(value);
@@ -65,9 +98,10 @@ void BackendOptionsForm::showOptions(const Backend& backend) {
       field = spin;
     }
     field->setObjectName(QStringLiteral("option_") + name);
-    field->setToolTip(description);
-    auto* label = new QLabel(name + QLatin1Char(':'));
-    label->setToolTip(description);
+    const QString toolTip = tr("%1 (option %2)").arg(description, name);
+    field->setToolTip(toolTip);
+    auto* label = new QLabel(humanLabel(name) + QLatin1Char(':'));
+    label->setToolTip(toolTip);
     label->setBuddy(field);
     form_->addRow(label, field);
   }

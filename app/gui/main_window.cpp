@@ -254,7 +254,8 @@ void MainWindow::updateStatusBar() {
 }
 
 void MainWindow::updateTitle() {
-  setWindowTitle(tr("FooBall — %1 — %2").arg(sourceName_, runs_->labels().join(tr(" vs "))));
+  // Qt adds the application's display name, "FooBall", after it.
+  setWindowTitle(tr("%1 — %2").arg(sourceName_, runs_->labels().join(tr(" vs "))));
 }
 
 void MainWindow::resetLayout() {

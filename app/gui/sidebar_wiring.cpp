@@ -4,6 +4,7 @@
 
 #include "ball_inspector.h"
 #include "charts/chart_panel.h"
+#include "fooball/number_text.h"
 #include "fooball/scene_error.h"
 #include "frame_loop.h"
 #include "main_window.h"
@@ -109,7 +110,10 @@ void wireRunList(MainWindow& window) {
                    [&window](int run, const QString& name, double value) {
                      try {
                        window.runs().setBackendOption(run, name, value);
-                       window.markChange(QStringLiteral("%1 = %2").arg(name, formatNumber(value)));
+                       // The value as the run spec has it: "substeps = 8", "rest_bounce_time =
+                       // 1e-06".
+                       window.markChange(QStringLiteral("%1 = %2").arg(
+                           name, QString::fromStdString(exactNumberText(value))));
                      } catch (const std::invalid_argument& error) {
                        window.showStatus(QString::fromStdString(error.what()));
                        window.sidebar()->runList()->showRuns(window.runs().group());

@@ -3,6 +3,8 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSpinBox>
@@ -13,6 +15,7 @@
 #include "backend_options_form.h"
 #include "charts/chart_panel.h"
 #include "compare_readout.h"
+#include "fooball/number_text.h"
 #include "gui_fixture.h"
 #include "run_counters.h"
 #include "run_list_editor.h"
@@ -148,6 +151,40 @@ TEST_F(CompareMode, TheCountersShowEachRunsOwnCollisionsBouncesOverlapAndEscapes
                              : overlap.section(QLatin1Char(' '), 0, 0).toDouble() / 100.0;
     EXPECT_NEAR(shown, metrics.maxOverlap, 0.05 * metrics.maxOverlap) << lines[run].toStdString();
   }
+}
+
+TEST_F(CompareMode, OptionsReadAsWordsAndShowTinyValuesAndWholeNumbersExactly) {
+  open(fooball::testing::gas(30), "exact", {"box2d"});
+  BackendOptionsForm* exact = runList()->optionsForm(0);
+  auto* restBounce = exact->findChild<QDoubleSpinBox*>(QStringLiteral("option_rest_bounce_time"));
+  ASSERT_NE(restBounce, nullptr);
+  const double restBounceTime = runs().run(0).backend().options().value("rest_bounce_time");
+  ASSERT_GT(restBounceTime, 0.0);
+  ASSERT_LT(restBounceTime, 1e-3);
+  EXPECT_EQ(restBounce->text(), QString::fromStdString(exactNumberText(restBounceTime)))
+      << "a tiny default reads as itself, not 0.0000";
+  // The user types another tiny value in exponent form.
+  restBounce->selectAll();
+  QTest::keyClicks(restBounce, QStringLiteral("2e-05"));
+  QTest::keyClick(restBounce, Qt::Key_Return);
+  EXPECT_EQ(runs().run(0).backend().options().value("rest_bounce_time"), 2e-5);
+
+  // Labels are words; the key is in the tooltip.
+  BackendOptionsForm* box2d = runList()->optionsForm(1);
+  auto* iterations = box2d->findChild<QSpinBox*>(QStringLiteral("option_velocity_iterations"));
+  ASSERT_NE(iterations, nullptr);
+  QLabel* label = nullptr;
+  for (QLabel* candidate : box2d->findChildren<QLabel*>()) {
+    if (candidate->buddy() == iterations) label = candidate;
+  }
+  ASSERT_NE(label, nullptr);
+  EXPECT_EQ(label->text(), QStringLiteral("Velocity iterations:"));
+  EXPECT_TRUE(label->toolTip().contains(QStringLiteral("velocity_iterations")));
+  // A whole-number option's chart marker reads as a whole number.
+  iterations->setValue(12);
+  const QStringList markers = window->charts()->markerLabels();
+  ASSERT_FALSE(markers.empty());
+  EXPECT_EQ(markers.back(), QStringLiteral("velocity_iterations = 12"));
 }
 
 TEST_F(CompareMode, FourRunsOverlayEveryChartAndSideBySideGivesEachRunATile) {

@@ -479,6 +479,13 @@ int ChartPanel::markerCount() const {
   return static_cast<int>(data_.markers().size());
 }
 
+QStringList ChartPanel::markerLabels() const {
+  QStringList labels;
+  for (const ChartMarker& marker : data_.markers())
+    labels.append(marker.label);
+  return labels;
+}
+
 int ChartPanel::displayedMarkerCount() const {
   for (const TimeChart* chart : charts_) {
     if (isChartShown(chart)) return chart->visibleMarkerCount();

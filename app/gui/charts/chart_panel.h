@@ -113,6 +113,8 @@ class ChartPanel : public QWidget {
   QString runLegendText() const;
   /// Markers held, and those inside the time axis's current range (drawn, after a refresh).
   int markerCount() const;
+  /// The markers' labels, oldest first.
+  QStringList markerLabels() const;
   int displayedMarkerCount() const;
   /// Redraws now (the timer calls it; tests call it directly).
   void refresh();
