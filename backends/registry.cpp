@@ -6,6 +6,7 @@
 #include "box2d/box2d_backend.h"
 #include "elastic/elastic_backend.h"
 #include "exact/exact_backend.h"
+#include "xpbd/xpbd_backend.h"
 
 namespace fooball {
 
@@ -16,6 +17,8 @@ constexpr BackendInfo kBackends[] = {
      &makeElasticBackend},
     {"box2d", "Box2D 2.4.1, restitution 1, configured for frictionless balls", &makeBox2dBackend},
     {"exact", "event-driven solver: exact collision times, processed in order", &makeExactBackend},
+    {"xpbd", "small-steps position-based dynamics: predict, project contacts, restitution pass",
+     &makeXpbdBackend},
 };
 
 }  // namespace
