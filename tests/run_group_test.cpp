@@ -328,6 +328,28 @@ TEST(RunGroup, SetBallCountAddsTheSameBallsToEveryRunAndRemovesTheNewest) {
     EXPECT_EQ(simulation->steps(), group.steps());
 }
 
+TEST(RunGroup, RestartKeepsTheBallCountAndGivesTheSameStateEachTime) {
+  const Scene loaded = gas(30);
+  RunGroup group = groupOf(loaded, {"elastic", "exact"});
+  group.setBaseline(true);
+  group.setBallCount(50);
+  group.runFor(1.0);
+  group.restart();
+  EXPECT_EQ(group.time(), 0.0);
+  for (const Simulation* simulation : everySimulation(group))
+    EXPECT_EQ(simulation->ballCount(), 50u);
+  for (std::size_t i = 0; i < 30; ++i)
+    EXPECT_EQ(group.run(0).positions()[i], loaded.balls[i].position)
+        << "the loaded balls, at t = 0";
+  const std::vector<Vec2> first = copyOf(group.run(1).positions());
+  group.runFor(0.5);
+  group.restart();
+  EXPECT_EQ(copyOf(group.run(1).positions()), first) << "every restart starts the same";
+  group.setBallCount(10);
+  group.restart();
+  EXPECT_EQ(group.ballCount(), 10u) << "fewer balls: the newest stay removed";
+}
+
 TEST(RunGroup, DeleteBallRemovesItFromEveryRunAndTheBaseline) {
   RunGroup group = groupOf(threeBalls(), {"elastic", "elastic:substeps=1"});
   group.setBaseline(true);

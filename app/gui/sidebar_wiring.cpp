@@ -220,6 +220,14 @@ void wireView(MainWindow& window) {
   SimulationView* view = window.view();
   MainWindow* w = &window;
   QObject::connect(view, &SimulationView::toolPressed, w, [w](Vec2 point) {
+    const Interactions& tools = w->runs().group().interactions();
+    if (tools.scope == Scope::Selected && !w->runs().group().selected()) {
+      // The tool would act on no ball: say why instead of doing nothing.
+      w->showStatus(
+          QObject::tr("The mouse tool acts on the selected ball, and none is selected: "
+                      "pause (Space) and click a ball, or choose All or Nearest"));
+      return;
+    }
     w->runs().changeTools([&](RunGroup& group) { group.pressTool(point); });
     w->markChange(modeName(w->runs().group().interactions().mode));
   });

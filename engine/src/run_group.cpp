@@ -157,12 +157,16 @@ void RunGroup::load(const Scene& scene) {
 }
 
 void RunGroup::restart() {
+  const std::size_t count = ballCount();
   Scene scene = loadedScene_;
   scene.world = world();
   forEachSimulation([&](Simulation& simulation) {
     simulation.interactions.selected.reset();
     simulation.load(scene);
   });
+  // The ball count is a setting like gravity: the loaded balls, then the newest removed or new
+  // ones placed as the spinner places them (the same at every restart: placed at step 0).
+  setBallCount(count);
   if (baseline_) setBaseline(true);
 }
 

@@ -1,4 +1,5 @@
 #include <QRadioButton>
+#include <QStatusBar>
 
 #include "gui_fixture.h"
 #include "settings_sidebar.h"
@@ -32,6 +33,21 @@ TEST_F(MouseTools, AttractPullsBallsTowardsTheCursor) {
   frames(20);
   QTest::mouseRelease(view(), Qt::LeftButton, {}, pixelOf(cursor));
   EXPECT_LT(length(ball() - cursor), before - 0.5);
+}
+
+TEST_F(MouseTools, SelectedScopeWithNothingSelectedSaysSoAndMovesNothing) {
+  open(oneBall());
+  chooseMode("attractRadio");
+  chooseMode("selectedRadio");
+  ASSERT_EQ(group().interactions().scope, Scope::Selected);
+  ASSERT_FALSE(group().selected());
+  const Vec2 cursor{10.0, 4.5};
+  QTest::mousePress(view(), Qt::LeftButton, {}, pixelOf(cursor));
+  frames(20);
+  QTest::mouseRelease(view(), Qt::LeftButton, {}, pixelOf(cursor));
+  EXPECT_EQ(ball(), (Vec2{4.0, 4.5}));
+  EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("none is selected")))
+      << window->statusBar()->currentMessage().toStdString();
 }
 
 TEST_F(MouseTools, RepelPushesBallsAway) {

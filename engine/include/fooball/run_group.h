@@ -84,7 +84,8 @@ class RunGroup {
   const Scene& loadedScene() const { return loadedScene_; }
   /// Every run starts on `scene` (valid) at t = 0; attractors and the selection go.
   void load(const Scene& scene);
-  /// Back to the loaded scene at t = 0, keeping the world settings and attractors of now.
+  /// Back to the loaded scene at t = 0, keeping the world settings, attractors and ball count
+  /// of now (setBallCount's balls).
   void restart();
   /// Run 0's state as a scene (what File → Save writes).
   Scene scene() const { return run(0).scene(); }
