@@ -27,6 +27,9 @@ namespace fooball::gui {
 namespace {
 
 constexpr int kStatusMessageMs = 8000;
+/// Changes of one setting closer together than this (ms) are one gesture: a slider's drag sends
+/// one every few ms, a user's separate changes are seconds apart.
+constexpr qint64 kGestureGapMs = 700;
 constexpr int kSidebarWidth = 330;        // px
 constexpr QSize kDefaultSize{1440, 900};  // px, before it is fitted to the screen
 /// The charts' first share of the window's height: the box stays the largest thing.
@@ -210,8 +213,16 @@ void MainWindow::sampleCharts() {
     charts_->addBaselineSample(baseline->metrics(), *group.baselineDivergence());
 }
 
-void MainWindow::markChange(const QString& label) {
-  charts_->addMarker(runs_->group().time(), label);
+void MainWindow::markChange(const QString& label, const QString& gesture) {
+  const bool continues = !gesture.isEmpty() && gesture == lastGesture_ && gestureClock_.isValid() &&
+                         gestureClock_.elapsed() < kGestureGapMs;
+  if (continues) {
+    charts_->replaceNewestMarker(runs_->group().time(), label);
+  } else {
+    charts_->addMarker(runs_->group().time(), label);
+  }
+  lastGesture_ = gesture;
+  gestureClock_.start();
 }
 
 void MainWindow::showStatus(const QString& message) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <functional>
 #include <memory>
@@ -94,8 +95,10 @@ class MainWindow : public QMainWindow {
   void startLiveUpdates();
   void updateStatusBar();
 
-  /// A vertical mark on the charts' time axis at the time of now.
-  void markChange(const QString& label);
+  /// A vertical mark on the charts' time axis at the time of now. Changes of one `gesture`
+  /// ("gravity": a slider dragged through many values) in quick succession are one marker, which
+  /// moves along and shows the latest value.
+  void markChange(const QString& label, const QString& gesture = {});
   void showStatus(const QString& message);
   void showSelectedBall();
   /// Brings every control in line with the runs (after a load or reset).
@@ -119,9 +122,12 @@ class MainWindow : public QMainWindow {
   bool rememberSettings_;
   QString presetName_;
   QString sourceName_;
-  bool docksSized_ = false;   ///< the docks got their first size (or a remembered layout)
-  bool shownOnce_ = false;    ///< shown before: the frame fit (keepFullyOnScreen) is done
-  QByteArray defaultLayout_;  ///< saveState() of the docks as created, for View → Reset layout
+  bool docksSized_ = false;  ///< the docks got their first size (or a remembered layout)
+  bool shownOnce_ = false;   ///< shown before: the frame fit (keepFullyOnScreen) is done
+  QByteArray defaultLayout_;
+  QString lastGesture_;         ///< markChange's, while it may go on
+  QElapsedTimer gestureClock_;  ///< since its last change  ///< saveState() of the docks as
+                                ///< created, for View → Reset layout
 
   SimulationView* view_ = nullptr;
   CompareReadout* compareReadout_ = nullptr;

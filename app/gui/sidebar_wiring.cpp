@@ -55,7 +55,8 @@ void applyGravity(MainWindow& window, double magnitude) {
     direction = loaded / length(loaded);
   }
   changeWorld(window, [&](WorldSettings& world) { world.gravity = magnitude * direction; });
-  window.markChange(QObject::tr("gravity %1 m/s²").arg(formatNumber(magnitude)));
+  window.markChange(QObject::tr("gravity %1 m/s²").arg(formatNumber(magnitude)),
+                    QStringLiteral("gravity"));
 }
 
 /// A new run; every run restarts from run 0's state (RunController::runsRestarted marks it).
@@ -113,7 +114,8 @@ void wireRunList(MainWindow& window) {
                        // The value as the run spec has it: "substeps = 8", "rest_bounce_time =
                        // 1e-06".
                        window.markChange(QStringLiteral("%1 = %2").arg(
-                           name, QString::fromStdString(exactNumberText(value))));
+                                             name, QString::fromStdString(exactNumberText(value))),
+                                         QStringLiteral("run %1 %2").arg(run).arg(name));
                      } catch (const std::invalid_argument& error) {
                        window.showStatus(QString::fromStdString(error.what()));
                        window.sidebar()->runList()->showRuns(window.runs().group());
@@ -174,15 +176,17 @@ void wireSidebar(MainWindow& window) {
                    [w](double magnitude) { applyGravity(*w, magnitude); });
   QObject::connect(s, &SettingsSidebar::airResistanceChosen, w, [w](double coefficient) {
     changeWorld(*w, [&](WorldSettings& world) { world.airResistance = coefficient; });
-    w->markChange(QObject::tr("air resistance %1 1/s").arg(formatNumber(coefficient)));
+    w->markChange(QObject::tr("air resistance %1 1/s").arg(formatNumber(coefficient)),
+                  QStringLiteral("air resistance"));
   });
   QObject::connect(s, &SettingsSidebar::strengthChosen, w, [w](double strength) {
     w->runs().changeTools([&](RunGroup& group) { group.setStrength(strength); });
-    w->markChange(QObject::tr("mouse strength %1").arg(formatNumber(strength)));
+    w->markChange(QObject::tr("mouse strength %1").arg(formatNumber(strength)),
+                  QStringLiteral("mouse strength"));
   });
   QObject::connect(s, &SettingsSidebar::timeScaleChosen, w, [w](double timeScale) {
     w->frames().setTimeScale(timeScale);
-    w->markChange(QObject::tr("speed %1×").arg(formatNumber(timeScale)));
+    w->markChange(QObject::tr("speed %1×").arg(formatNumber(timeScale)), QStringLiteral("speed"));
   });
   QObject::connect(s, &SettingsSidebar::resetSlidersRequested, w, [w] { resetSliders(*w); });
   QObject::connect(s, &SettingsSidebar::ballCollisionsToggled, w, [w](bool on) {

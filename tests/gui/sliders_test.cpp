@@ -1,8 +1,10 @@
 #include <QCheckBox>
 #include <QSlider>
 
+#include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "log_slider.h"
+#include "number_format.h"
 #include "settings_sidebar.h"
 
 namespace fooball::gui::testing {
@@ -26,6 +28,24 @@ TEST_F(Sliders, GravitySliderSetsWorldGravityDownwards) {
   EXPECT_DOUBLE_EQ(group().world().gravity.y, -chosen);
   frames(10);
   EXPECT_LT(mainRun().velocities()[0].y, 0.0) << "the balls fall";
+}
+
+TEST_F(Sliders, OneDragIsOneMarkerShowingTheFinalValue) {
+  open(stillBalls());
+  LogSlider* gravity = window->sidebar()->gravitySlider();
+  const int before = window->charts()->markerCount();
+  // A drag sends a value every few milliseconds.
+  for (int position = 100; position <= 400; position += 10)
+    move(gravity, position);
+  ASSERT_EQ(window->charts()->markerCount(), before + 1) << "one gesture, one marker";
+  const QString label = window->charts()->markerLabels().back();
+  EXPECT_TRUE(label.contains(formatNumber(gravity->value()))) << label.toStdString();
+  // A change seconds later is a gesture of its own; another setting is one anyway.
+  QTest::qWait(800);
+  move(gravity, 450);
+  EXPECT_EQ(window->charts()->markerCount(), before + 2);
+  move(window->sidebar()->airResistanceSlider(), 300);
+  EXPECT_EQ(window->charts()->markerCount(), before + 3);
 }
 
 TEST_F(Sliders, GravitySliderLeftEndIsExactlyZero) {

@@ -63,6 +63,14 @@ void ChartData::addMarker(double time, const QString& label) {
   if (markers_.size() > kMaxMarkers) markers_.pop_front();
 }
 
+void ChartData::replaceNewestMarker(double time, const QString& label) {
+  if (markers_.empty()) {
+    addMarker(time, label);
+  } else {
+    markers_.back() = {time, label};
+  }
+}
+
 template <class Action>
 void ChartData::forEachHistory(Action&& action) const {
   for (const Run& run : runs_)

@@ -55,6 +55,9 @@ class ChartData {
   /// divergence from run 0 then. Ignored for any other index.
   void addSample(int runIndex, const Metrics& metrics, const Divergence& fromRunZero);
   void addMarker(double time, const QString& label);
+  /// Moves the newest marker to `time` with `label` (one gesture going on); adds one if there is
+  /// none.
+  void replaceNewestMarker(double time, const QString& label);
 
   int runCount() const { return static_cast<int>(runs_.size()); }
   QStringList runNames() const;

@@ -276,6 +276,11 @@ void ChartPanel::addMarker(double time, const QString& label) {
   viewOutOfDate_ = true;
 }
 
+void ChartPanel::replaceNewestMarker(double time, const QString& label) {
+  data_.replaceNewestMarker(time, label);
+  viewOutOfDate_ = true;
+}
+
 void ChartPanel::setWindowSeconds(double seconds) {
   if (!std::isfinite(seconds)) return;
   {

@@ -83,6 +83,7 @@ class ChartPanel : public QWidget {
   /// A vertical mark on the time axis (s): a mouse interaction or a setting change ("gravity",
   /// "grab").
   void addMarker(double time, const QString& label);
+  void replaceNewestMarker(double time, const QString& label);
   /// Scrolling window (seconds of simulated time, whole seconds from 1 s to 1 h) vs the whole
   /// run.
   void setWindowSeconds(double seconds);  // default 20 s
