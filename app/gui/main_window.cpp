@@ -120,6 +120,7 @@ void MainWindow::connectRuns() {
   });
   connect(runs_.get(), &RunController::selectionChanged, this,
           [this](std::optional<std::size_t> index) {
+            actions_->deleteBall()->setEnabled(index.has_value());
             showSelectedBall();
             if (index) sidebarScroll_->ensureWidgetVisible(sidebar_->inspector());
             view_->update();

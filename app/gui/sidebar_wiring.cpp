@@ -154,10 +154,7 @@ void wireInspector(MainWindow& window) {
                      window.view()->update();
                    });
   QObject::connect(inspector, &BallInspector::deleteRequested, &window,
-                   [&window](std::size_t index) {
-                     window.runs().deleteBall(index);
-                     window.markChange(QObject::tr("ball #%1 deleted").arg(index));
-                   });
+                   [&window](std::size_t index) { deleteBall(window, index); });
 }
 
 }  // namespace
@@ -265,6 +262,11 @@ void resetSliders(MainWindow& window) {
   sidebar->showStrength(Interactions::kDefaultStrength);
   sidebar->showTimeScale(FrameLoop::kDefaultTimeScale);
   window.markChange(QObject::tr("sliders reset"));
+}
+
+void deleteBall(MainWindow& window, std::size_t index) {
+  window.runs().deleteBall(index);
+  window.markChange(QObject::tr("ball #%1 deleted").arg(index));
 }
 
 void clearAttractors(MainWindow& window) {

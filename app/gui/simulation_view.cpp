@@ -71,6 +71,9 @@ SimulationView::SimulationView(const RunController& runs, QWidget* parent)
     : QWidget(parent), runs_(runs) {
   setAttribute(Qt::WA_OpaquePaintEvent);
   setMouseTracking(true);
+  // A click in the box takes the keyboard from a field of the sidebar, so Space and '.' pause
+  // and step instead of typing into it.
+  setFocusPolicy(Qt::ClickFocus);
   setCursor(Qt::CrossCursor);
   setToolTip(
       tr("Left button: the mouse tool (attract, repel, grab, slingshot).\n"

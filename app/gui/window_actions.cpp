@@ -36,6 +36,16 @@ void WindowActions::createActions() {
   step_->setShortcut(Qt::Key_Period);
   step_->setToolTip(tr("One physics step of every run while paused (.)"));
   step_->setEnabled(false);
+
+  deleteBall_ = new QAction(tr("&Delete selected ball"), this);
+  deleteBall_->setShortcut(QKeySequence::Delete);
+  deleteBall_->setToolTip(tr("Remove the selected ball from every run (Delete)"));
+  deleteBall_->setEnabled(false);
+  connect(deleteBall_, &QAction::triggered, this, [this] {
+    if (const auto selected = window_.runs().group().selected()) {
+      gui::deleteBall(window_, *selected);
+    }
+  });
   connect(step_, &QAction::triggered, this, [this] {
     window_.runs().stepOnce();
     window_.sampleCharts();
@@ -99,6 +109,8 @@ void WindowActions::createMenus() {
   QMenu* simulation = bar->addMenu(tr("&Simulation"));
   simulation->addAction(pause_);
   simulation->addAction(step_);
+  // A field being edited keeps Delete for its text: Qt gives editors their editing keys first.
+  simulation->addAction(deleteBall_);
   simulation->addSeparator();
   simulation->addAction(tr("&Restart"), QKeySequence(tr("Ctrl+R")), &window_, &MainWindow::restart);
   simulation->addAction(tr("Rese&t scene"), QKeySequence(tr("Ctrl+Shift+R")), &window_,
@@ -113,6 +125,9 @@ void WindowActions::createMenus() {
   QAction* chartsToggle = window_.chartsDock()->toggleViewAction();
   chartsToggle->setShortcut(QKeySequence(tr("Ctrl+2")));
   viewMenu->addActions({sidebarToggle, chartsToggle});
+  QAction* focusBox = viewMenu->addAction(tr("&Focus the box"), QKeySequence(Qt::Key_Escape),
+                                          window_.view(), qOverload<>(&QWidget::setFocus));
+  focusBox->setToolTip(tr("Give the keyboard back to the box (Esc): Space pauses, '.' steps"));
   QAction* resetLayout =
       viewMenu->addAction(tr("Reset &layout"), &window_, &MainWindow::resetLayout);
   resetLayout->setToolTip(tr("Put the settings and charts back where they were at first start"));

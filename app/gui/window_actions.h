@@ -21,6 +21,7 @@ class WindowActions : public QObject {
 
   QAction* pause() const { return pause_; }
   QAction* step() const { return step_; }
+  QAction* deleteBall() const { return deleteBall_; }
   QAction* temperature() const { return temperature_; }
   QAction* tethers() const { return tethers_; }
   QAction* velocityVectors() const { return velocityVectors_; }
@@ -51,6 +52,7 @@ class WindowActions : public QObject {
 
   MainWindow& window_;
   QAction* pause_ = nullptr;
+  QAction* deleteBall_ = nullptr;
   QAction* step_ = nullptr;
   QAction* temperature_ = nullptr;
   QAction* tethers_ = nullptr;

@@ -30,6 +30,32 @@ class BallEditing : public GuiTest {
   }
 };
 
+TEST_F(BallEditing, TheDeleteKeyDeletesTheSelectedBallUnlessAFieldIsBeingEdited) {
+  open(stillBalls());
+  selectBall(1);
+  QDoubleSpinBox* x = field("inspectorX");
+  x->setFocus();
+  x->selectAll();
+  QTest::keyClick(x, Qt::Key_Delete);
+  EXPECT_EQ(group().ballCount(), 3u) << "Delete in a field edits the field";
+  QTest::keyClick(window.get(), Qt::Key_Escape);
+  EXPECT_TRUE(view()->hasFocus()) << "Esc gives the keyboard back to the box";
+  QTest::keyClick(view(), Qt::Key_Delete);
+  EXPECT_EQ(group().ballCount(), 2u);
+  EXPECT_FALSE(group().selected());
+}
+
+TEST_F(BallEditing, AfterEditingAFieldAClickInTheBoxGivesSpaceBackToPause) {
+  open(stillBalls());
+  selectBall(0);
+  edit("inspectorVx", 1.0);
+  ASSERT_TRUE(runs().paused());
+  QTest::mouseClick(view(), Qt::LeftButton, {}, pixelOf({8.0, 1.0}));  // no ball there
+  EXPECT_TRUE(view()->hasFocus());
+  QTest::keyClick(view(), Qt::Key_Space);
+  EXPECT_FALSE(runs().paused()) << "Space paused or continued, it typed into no field";
+}
+
 TEST_F(BallEditing, ClickingABallWhilePausedSelectsIt) {
   open(stillBalls());
   runs().setPaused(true);
