@@ -4,6 +4,7 @@
 #include <string>
 
 #include "box2d/box2d_backend.h"
+#include "chipmunk/chipmunk_backend.h"
 #include "elastic/elastic_backend.h"
 #include "exact/exact_backend.h"
 #include "xpbd/xpbd_backend.h"
@@ -19,6 +20,8 @@ constexpr BackendInfo kBackends[] = {
     {"exact", "event-driven solver: exact collision times, processed in order", &makeExactBackend},
     {"xpbd", "small-steps position-based dynamics: predict, project contacts, restitution pass",
      &makeXpbdBackend},
+    {"chipmunk", "Chipmunk2D 7.0.3, elasticity 1, configured for frictionless balls",
+     &makeChipmunkBackend},
 };
 
 }  // namespace

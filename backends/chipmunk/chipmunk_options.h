@@ -1,0 +1,29 @@
+#pragma once
+
+#include <vector>
+
+#include "contact_slop.h"
+#include "fooball/options.h"
+
+namespace fooball::chipmunk_detail {
+
+/// The Chipmunk backend's options as the step loop uses them: read once when an option changes,
+/// never per step. The contact defaults and their measurements are in contact_slop.h, the
+/// broad phases in broadphase.h.
+struct ChipmunkSettings {
+  int substeps = 1;     ///< Chipmunk steps per step()
+  int iterations = 10;  ///< impulse-solver passes per Chipmunk step (Chipmunk's default)
+  /// Overlap left alone by the position correction, as a fraction of the smallest ball radius.
+  double collisionSlop = kDefaultSlopFraction;
+  /// Fraction of an overlap (beyond the slop) left uncorrected after one second.
+  double collisionBias = kDefaultCollisionBias;
+  bool spatialHash = false;  ///< broad phase: false the BB-tree, true a spatial hash
+};
+
+/// The option specs the backend registers, with ChipmunkSettings' defaults.
+std::vector<OptionSpec> chipmunkOptionSpecs();
+
+/// `options` must hold the specs of chipmunkOptionSpecs(); OptionSet has checked the ranges.
+ChipmunkSettings readChipmunkSettings(const OptionSet& options);
+
+}  // namespace fooball::chipmunk_detail

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <chipmunk/chipmunk.h>
+
+#include <cstdint>
+
+#include "fooball/scene.h"
+
+namespace fooball::chipmunk_detail {
+
+/// Brings back a ball whose centre a Chipmunk step left beyond a wall that is on, as an elastic
+/// wall would have: its centre mirrored in the wall's face, its velocity into the wall reflected.
+///
+/// Chipmunk has no continuous collision: it finds contacts only where a step ends, so a ball
+/// that moves more than its radius plus the wall's thickness past the face in one step
+/// (wall_segments.h) has its centre beyond the wall's axis and is pushed out on the far side,
+/// lost for good. The random invariants (tests/robustness) throw exactly that at it (speeds up to
+/// 5 box sides per second, steps up to 50 ms, balls down to 1e-5 of the box). Every ball inside
+/// the box passes four comparisons; one whose centre crossed a face is brought back at once,
+/// before anyone reads it or the next step finds its contacts. A ball whose centre is beyond the
+/// face by less went through Chipmunk's own contact, whose impulse already turned it inwards: it
+/// is only mirrored. A resting contact never gets this deep: the slop (contact_slop.h) is at most
+/// half the smallest radius.
+///
+/// Mirroring moves the ball against gravity by twice its depth, so the normal speed it leaves
+/// with is lowered to pay for that lift (½v'² = ½v² + g·Δp per axis; 0 if the lift costs more
+/// than the ball has): the energy an exact wall would keep. The bounce is counted as a wall
+/// collision only when Chipmunk cannot have seen it: a centre more than radius + 2·thickness
+/// beyond the face was beyond the wall's reach, so no contact began (contact_counter.h).
+class WallContainment {
+ public:
+  /// `gravity` (m/s²) as the step flies the balls; `thickness` (m) of the walls.
+  WallContainment(const Box& box, const Walls& walls, Vec2 gravity, double thickness);
+
+  /// Brings `ball` (radius in m, mass in kg) back if its centre is beyond a wall.
+  void contain(cpBody* ball, double radius, double mass) {
+    const cpVect p = cpBodyGetPosition(ball);
+    if (p.x >= lowX_ && p.x <= highX_ && p.y >= lowY_ && p.y <= highY_) return;
+    bringBack(ball, radius, mass);
+  }
+
+  std::uint64_t ballsBroughtBack() const { return ballsBroughtBack_; }
+  std::uint64_t wallCollisions() const { return wallCollisions_; }  ///< unseen by Chipmunk
+  double impulse() const { return impulse_; }  ///< N·s, Σ|Δp| of the velocities turned back
+
+ private:
+  void bringBack(cpBody* ball, double radius, double mass);
+
+  double lowX_;   ///< m, the lowest centre left alone (−∞ where the wall is off)
+  double highX_;  ///< m, the highest
+  double lowY_;
+  double highY_;
+  Vec2 gravity_;      ///< m/s²
+  double thickness_;  ///< m
+  std::uint64_t ballsBroughtBack_ = 0;
+  std::uint64_t wallCollisions_ = 0;
+  double impulse_ = 0.0;
+};
+
+}  // namespace fooball::chipmunk_detail
