@@ -179,7 +179,48 @@ constexpr BoundaryExpectation kXpbdBoundaries[] = {
     pileGivesWayBetween(100.0, 1000.0),
 };
 
-constexpr std::array<BackendProfile, 4> kProfiles = {{
+constexpr BoundaryExpectation kChipmunkBoundaries[] = {
+    // No continuous collision between balls: like the elastic solver it tunnels at two to four
+    // radii per substep, at any size (Chipmunk has no translation cap to shorten its steps).
+    // Measured: both curves pass up to 2 and fail from 2.38 (the next grid point).
+    tunnelsBetweenTwoAndFourRadii("ball r=0.05 m"),
+    tunnelsBetweenTwoAndFourRadii("ball r=0.5 m"),
+    // Walls: a ball that crosses one within a step is caught by the wall's thickness or brought
+    // back by the adapter's containment (backends/chipmunk/wall_containment.h): it never tunnels
+    // a wall.
+    {.sweep = "tunnelling", .variant = "wall r=0.05 m", .passesEverywhere = true},
+    // One two-body contact: Chipmunk's first impulse iteration reaches the elastic target exactly
+    // (the effective mass 1/(1/m1 + 1/m2) in double), and the later ones add nothing. Measured
+    // ≤ 2.2e-16 up to a million to one.
+    {.sweep = "mass-ratio", .maxError = kDoubleRounding},
+    // Chipmunk makes a contact only for strictly overlapping circles, and a touching row
+    // (1e-5 r, the closest the sweep draws) is not overlapping: each pair is met in its own
+    // substep, one after the other, so the whole momentum reaches the last ball (measured
+    // ≤ 4.7e-18), down to touching — unlike Box2D, whose contacts begin at touching.
+    {.sweep = "cradle", .maxError = kDoubleRounding},
+    // Dense packing at 1 m/s: no closed form says where a solver's overlaps pass 0.1 r; the
+    // brackets pin the quick grid's cells (fractions 0.277, 0.462, 0.646, 0.776, 0.822) the
+    // current code lands in. r = 0.1 m fails from 0.462 on overlap (0.134 r: a substep's travel
+    // at the gas's fastest speeds, beside a neighbour); r = 0.2 m from 0.776 on energy (3.7e-3:
+    // jammed balls whose several contacts Chipmunk's iterations solve one after the other).
+    {.sweep = "packing",
+     .variant = "64 balls r=0.1 m",
+     .lastPass = around(0.277, 0.01),
+     .firstFail = around(0.462, 0.01)},
+    {.sweep = "packing",
+     .variant = "64 balls r=0.2 m",
+     .lastPass = around(0.646, 0.01),
+     .firstFail = around(0.776, 0.01)},
+    // Scale, 1e-4 to 1e4: double state, and the slop is a fraction of the radius (not
+    // Chipmunk's absolute 0.1), so the same motion at every scale. Measured ≤ 6e-16.
+    {.sweep = "scale", .maxError = kDoubleRounding, .passesEverywhere = true},
+    // The pile holds up to ten metres per second squared (the position bias removes each step's
+    // overlap in the next: backends/chipmunk/contact_slop.h; energy error 7.6e-3 of Σ m·g·r at
+    // g = 10, 0.12 at g = 100, overlap 0.35 r).
+    pileGivesWayBetween(10.0, 100.0),
+};
+
+constexpr std::array<BackendProfile, 5> kProfiles = {{
     {
         .name = "elastic",
         // The defaults: its impulse and wall mirror conserve KE to rounding.
@@ -374,6 +415,53 @@ constexpr std::array<BackendProfile, 4> kProfiles = {{
         .energyGainSeed = 0,
         .determinismHash = 16942831552505709587u,
         .failureMap = kXpbdBoundaries,
+    },
+    {
+        .name = "chipmunk",
+        // Chipmunk's cpFloat is double (Debian's build). Momentum and the closed-form answers
+        // hold to double rounding (the defaults: measured 9e-17 of Σ m|v| after 3 s of a gas
+        // with walls off). Its energy is not exact: where one ball's several contacts are solved
+        // in one step, its sequential impulses treat them one after the other. Measured −9.5e-9
+        // over 5 s in the 300-ball gas; 1e-7 is ten times that.
+        .conformance = {.energy = 1e-7},
+        .methodError =
+            {
+                .timeStepped = true,
+                // It finds the contact at the end of the substep's position update and reverses
+                // u there; the overlap u·τ is then flown out (factor 2), less what the position
+                // bias pushes apart in the next position update (up to the whole overlap with the
+                // default collision_bias 0: factor 1). 2 bounds both.
+                .contactLag = 2.0,
+                // The same at a wall.
+                .wallLag = 2.0,
+                // The adapter kicks gravity and drag into the velocities before each Chipmunk
+                // step, which then moves the positions: semi-implicit Euler (v += h·g;
+                // x += h·v), as Box2D (backends/chipmunk/flight.h).
+                .eulerFlight = true,
+                // double state: rounding is held by the 1e-9 floor.
+            },
+        // Measured over this scene: −4.7e-7 at the end, −3.0e-7 on average (a loss: the
+        // sequential impulses of simultaneous contacts, see conformance above). Bounded in both
+        // directions by ten times the larger: 5e-6.
+        .gasEnergyDrift = 5e-6,
+        // Double state, and the adapter brings back a ball that crosses a wall with its centre
+        // mirrored inside (wall_containment.h), so no slack at the walls. Energy, checked under
+        // gravity too: of the default 2'000 cases, 5 grow by more than 1e-9 (rounding), the most
+        // by 7.5e-4 (seed 383: 57 balls under g = 1.5 m/s², one substep and one iteration, a
+        // crowd whose contacts a single sequential-impulse pass leaves unresolved); the others
+        // by 2.4e-6 to 1.4e-5, semi-implicit Euler's bounces under gravity (seed 366: one ball).
+        // 1e-2 is thirteen times the worst.
+        .robustness = {.energyRelative = 1e-2,
+                       .energyAbsolute = 1e-12,
+                       .wallSlack = 0.0,
+                       .energyKeptUnderGravity = true,
+                       .energyKeptUnderGravityWithCollisions = true},
+        // None: its cost is fixed by the case (balls, steps, substeps), which drawCase bounds:
+        // the default 2'000 cases take 3.5 s together.
+        .workCap = {},
+        .energyGainSeed = 0,
+        .determinismHash = 4657059805787966518u,
+        .failureMap = kChipmunkBoundaries,
     },
 }};
 

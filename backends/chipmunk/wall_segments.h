@@ -20,9 +20,9 @@ namespace fooball::chipmunk_detail {
 /// Chipmunk has no continuous collision: a ball whose centre crosses the axis within one step
 /// would be pushed out on the far side. The thickness sets how fast a ball can be before that
 /// can happen (one step's travel beyond contact up to radius + thickness); beyond it the wall
-/// containment (wall_containment.h) brings the ball back. It is the largest ball radius: a
-/// thicker wall would cost the spatial hash (broadphase.h) cells for nothing the containment does
-/// not already guarantee.
+/// containment (wall_containment.h) brings the ball back. It is the largest ball radius, and
+/// no more than a cell of the spatial hash (broadphase.h): a thicker wall would cost the hash
+/// cells for nothing the containment does not already guarantee.
 class WallSegments {
  public:
   /// Creates the walls `walls` turns on and removes those it turns off, leaving the others (and
