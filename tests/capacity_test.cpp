@@ -147,6 +147,34 @@ TEST(MeasureCapacity, MeasuresARealBackendWithinSmallLimits) {
   EXPECT_EQ(reports, static_cast<int>(results[0].outcome.probes.size()));
 }
 
+TEST(MeasureCapacity, MeasuresOneBackendInTwoSettingsSideBySideLabelledByTheirSpecs) {
+  CapacitySettings settings;
+  settings.budgetMs = 5.0;
+  settings.timedSteps = 3;
+  settings.limits.firstBalls = 500;
+  settings.limits.maxBalls = 1000;
+  const std::string name(registeredBackends()[0].name);
+  const RunSpec runs[] = {{name, {"substeps=1"}}, {name, {"substeps=2"}}};
+  const std::vector<CapacityResult> results = measureCapacity(runs, settings);
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_EQ(results[0].backend, name + ":substeps=1");
+  EXPECT_EQ(results[1].backend, name + ":substeps=2");
+  const RunSpec unknown[] = {{name, {"no_such_option=1"}}};
+  EXPECT_THROW(checkCapacitySettings(unknown, settings), std::invalid_argument);
+}
+
+TEST(CapacityCsv, QuotesASpecWithSeveralOptions) {
+  std::vector<CapacityResult> results(1);
+  results[0].backend = "box2d:substeps=8,velocity_iterations=20";
+  results[0].outcome.balls = 7'000;
+  results[0].outcome.medianStepMs = 15.5;
+  std::ostringstream csv;
+  writeCapacityCsv(csv, results);
+  EXPECT_EQ(
+      csv.str(),
+      "backend,balls,median_step_ms\n\"box2d:substeps=8,velocity_iterations=20\",7000,15.5\n");
+}
+
 TEST(MeasureCapacity, AStopRequestEndsTheRun) {
   std::stop_source stop;
   stop.request_stop();

@@ -56,10 +56,10 @@ void printTable(const std::vector<measure::CapacityResult>& results,
 }  // namespace
 
 void capacityCommand(const CapacityOptions& options, std::ostream& out) {
-  const std::vector<BackendInfo> backends = chosenBackends(options.backends);
+  const std::vector<RunSpec> runs = chosenRuns(options.backends);
   const measure::CapacitySettings settings = settingsFrom(options);
   if (!(options.timeLimitSeconds > 0.0)) throw UsageError("--time-limit: must be > 0");
-  measure::checkCapacitySettings(backends, settings);
+  measure::checkCapacitySettings(runs, settings);
   if (options.csvPath) checkWritableFile(*options.csvPath, "--csv");
   if (options.chartPath) checkWritableFile(*options.chartPath, "--chart");
 
@@ -70,7 +70,7 @@ void capacityCommand(const CapacityOptions& options, std::ostream& out) {
                 readableText(at.search.latest.medianStepMs, 3) + " ms");
   };
   const std::vector<measure::CapacityResult> results =
-      measure::measureCapacity(backends, settings, progress);
+      measure::measureCapacity(runs, settings, progress);
   status.clear();
 
   if (!options.quiet) printTable(results, settings, out);

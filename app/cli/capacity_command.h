@@ -10,7 +10,8 @@ namespace fooball::cli {
 
 /// Everything `fooball-cli capacity` was asked to do, as parsed.
 struct CapacityOptions {
-  std::vector<std::string> backends;     ///< --backend, repeatable; empty: every registered one
+  std::vector<std::string>
+      backends;  ///< --backend run specs, repeatable; empty: every registered one
   double budgetMs = 1000.0 / 60.0;       ///< --budget-ms
   double packingFraction = 0.2;          ///< --packing-fraction
   int steps = 9;                         ///< --steps: timed steps per ball count, median taken

@@ -14,4 +14,18 @@ std::vector<BackendInfo> chosenBackends(const std::vector<std::string>& names) {
   return chosen;
 }
 
+std::vector<RunSpec> chosenRuns(const std::vector<std::string>& specs) {
+  std::vector<RunSpec> runs;
+  if (specs.empty()) {
+    for (const BackendInfo& info : registeredBackends())
+      runs.push_back({std::string(info.name), {}});
+    return runs;
+  }
+  for (const std::string& text : specs) {
+    runs.push_back(parseRunSpec(text));
+    createBackend(runs.back());  // throws for an unknown backend or option
+  }
+  return runs;
+}
+
 }  // namespace fooball::cli

@@ -147,8 +147,10 @@ struct CapacityFlags {
 
 void addCapacityFlags(CLI::App& capacity, CapacityOptions& options, CapacityFlags& flags) {
   capacity
-      .add_option("--backend", options.backends, "backend to measure (repeatable; default all)")
-      ->type_name("NAME")
+      .add_option("--backend", options.backends,
+                  "backend to measure, with its own options (repeatable; default all), e.g. "
+                  "chipmunk:spatial_hash=1")
+      ->type_name("SPEC")
       ->allow_extra_args(false);
   capacity.add_option("--budget-ms", options.budgetMs, "time one step may take, in ms")
       ->type_name("MS")
@@ -202,8 +204,10 @@ void addTradeoffFlags(CLI::App& tradeoff, TradeoffOptions& options, TradeoffFlag
       ->capture_default_str()
       ->excludes(flags.sceneFlag);
   tradeoff
-      .add_option("--backend", options.backends, "backend to measure (repeatable; default all)")
-      ->type_name("NAME")
+      .add_option("--backend", options.backends,
+                  "backend to measure, with its own options (repeatable; default all), e.g. "
+                  "chipmunk:spatial_hash=1")
+      ->type_name("SPEC")
       ->allow_extra_args(false);
   tradeoff
       .add_option("--duration", options.duration,

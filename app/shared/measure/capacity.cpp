@@ -15,6 +15,21 @@ std::string_view optionName(std::string_view assignment) {
   return assignment.substr(0, assignment.find('='));
 }
 
+/// A run spec with several options has commas ("box2d:substeps=8,velocity_iterations=20"): such
+/// a field is quoted as RFC 4180 says, so every row keeps its three columns.
+void writeCsvField(std::ostream& out, std::string_view text) {
+  if (text.find_first_of(",\"\n") == std::string_view::npos) {
+    out << text;
+    return;
+  }
+  out << '"';
+  for (const char c : text) {
+    if (c == '"') out << '"';
+    out << c;
+  }
+  out << '"';
+}
+
 /// Applies the options of `assignments` that `backend` has; returns those it took.
 std::vector<std::string> applyOptions(Backend& backend, std::span<const std::string> assignments) {
   std::vector<std::string> taken;
@@ -28,8 +43,14 @@ std::vector<std::string> applyOptions(Backend& backend, std::span<const std::str
 
 }  // namespace
 
-void checkCapacitySettings(std::span<const BackendInfo> backends,
-                           const CapacitySettings& settings) {
+std::vector<RunSpec> defaultRuns(std::span<const BackendInfo> backends) {
+  std::vector<RunSpec> runs;
+  for (const BackendInfo& info : backends)
+    runs.push_back({std::string(info.name), {}});
+  return runs;
+}
+
+void checkCapacitySettings(std::span<const RunSpec> runs, const CapacitySettings& settings) {
   const auto positive = [](double value) { return std::isfinite(value) && value > 0.0; };
   if (!positive(settings.budgetMs)) throw std::invalid_argument("budget: must be a number > 0");
   if (!positive(settings.dt)) throw std::invalid_argument("dt: must be a number > 0");
@@ -37,16 +58,18 @@ void checkCapacitySettings(std::span<const BackendInfo> backends,
     throw std::invalid_argument("packing fraction: must be in (0, 0.9)");
   }
   if (settings.timedSteps < 1) throw std::invalid_argument("timed steps: must be >= 1");
+  for (const RunSpec& run : runs)
+    createBackend(run);  // throws naming the spec
   for (const std::string& assignment : settings.options) {
     bool known = false;
-    for (const BackendInfo& info : backends) {
-      const auto backend = info.create();
+    for (const RunSpec& run : runs) {
+      const auto backend = createBackend(run.backend);
       if (!backend->options().has(optionName(assignment))) continue;
       known = true;
       try {
         backend->setOptionFromText(assignment);
       } catch (const std::invalid_argument& error) {
-        throw std::invalid_argument("backend '" + std::string(info.name) + "': " + error.what());
+        throw std::invalid_argument("backend '" + run.backend + "': " + error.what());
       }
     }
     if (!known) {
@@ -57,26 +80,28 @@ void checkCapacitySettings(std::span<const BackendInfo> backends,
 }
 
 std::vector<CapacityResult> measureCapacity(
-    std::span<const BackendInfo> backends, const CapacitySettings& settings,
+    std::span<const RunSpec> runs, const CapacitySettings& settings,
     const std::function<void(const CapacityProgress&)>& progress, std::stop_token stop) {
-  checkCapacitySettings(backends, settings);
+  checkCapacitySettings(runs, settings);
   std::vector<CapacityResult> results;
-  for (std::size_t index = 0; index < backends.size() && !stop.stop_requested(); ++index) {
-    const BackendInfo& info = backends[index];
-    CapacityResult result{std::string(info.name), {}, {}};
+  for (std::size_t index = 0; index < runs.size() && !stop.stop_requested(); ++index) {
+    const RunSpec& run = runs[index];
+    CapacityResult result{run.text(), {}, {}};
     const CostOf medianStep = [&](std::size_t balls) -> std::optional<double> {
       if (stop.stop_requested()) return std::nullopt;
       const Scene scene = standardGas(balls, settings.packingFraction);
-      const auto backend = info.create();
+      const auto backend = createBackend(run.backend);
       result.options = applyOptions(*backend, settings.options);
+      for (const std::string& assignment : run.assignments)
+        backend->setOptionFromText(assignment);
       backend->load(scene);
       return medianStepMs(*backend, settings.dt, settings.timedSteps, stop);
     };
     const auto report = [&](const SearchProgress& search) {
       if (!progress) return;
       const double fraction =
-          (static_cast<double>(index) + search.fraction) / static_cast<double>(backends.size());
-      progress({info.name, index, backends.size(), search, fraction});
+          (static_cast<double>(index) + search.fraction) / static_cast<double>(runs.size());
+      progress({result.backend, index, runs.size(), search, fraction});
     };
     result.outcome = searchCapacity(medianStep, settings.budgetMs, settings.limits, report);
     results.push_back(std::move(result));
@@ -87,8 +112,8 @@ std::vector<CapacityResult> measureCapacity(
 void writeCapacityCsv(std::ostream& out, std::span<const CapacityResult> results) {
   out << kCapacityCsvHeader << '\n';
   for (const CapacityResult& result : results) {
-    out << result.backend << ',' << result.outcome.balls << ',' << result.outcome.medianStepMs
-        << '\n';
+    writeCsvField(out, result.backend);
+    out << ',' << result.outcome.balls << ',' << result.outcome.medianStepMs << '\n';
   }
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "capacity_search.h"
+#include "fooball/run_spec.h"
 #include "registry.h"
 
 namespace fooball::measure {
@@ -27,33 +28,51 @@ struct CapacitySettings {
   SearchLimits limits;
 };
 
-/// One backend's capacity.
+/// One run's capacity.
 struct CapacityResult {
-  std::string backend;
+  std::string backend;  ///< the run spec's text: the backend's name, then its own options
   std::vector<std::string> options;  ///< those of CapacitySettings::options it took
   SearchOutcome outcome;
 };
 
 /// Where a capacity run is, for a progress bar.
 struct CapacityProgress {
-  std::string_view backend;
+  std::string_view backend;      ///< the run spec's text
   std::size_t backendIndex = 0;  ///< of backendCount
   std::size_t backendCount = 0;
   SearchProgress search;  ///< within this backend
   double fraction = 0.0;  ///< of the whole run, in [0, 1)
 };
 
-/// Throws std::invalid_argument when a setting is out of range or an option of `settings` is
-/// unknown to every backend of `backends` (or out of range for one that has it).
-void checkCapacitySettings(std::span<const BackendInfo> backends, const CapacitySettings& settings);
+/// One run per backend, at its defaults.
+std::vector<RunSpec> defaultRuns(std::span<const BackendInfo> backends);
 
-/// The capacity of each backend in turn, on the calling thread (seconds to minutes: run it
-/// off the GUI thread). `progress` is called after every ball count measured; a stop request
-/// ends the run within one step, and the backends not finished are left out (the one cut
-/// short is reported with outcome.cancelled).
+/// Throws std::invalid_argument when a setting is out of range, a run spec names an unknown
+/// backend or option (or a value out of range), or an option of `settings` is unknown to every
+/// measured backend (or out of range for one that has it).
+void checkCapacitySettings(std::span<const RunSpec> runs, const CapacitySettings& settings);
+inline void checkCapacitySettings(std::span<const BackendInfo> backends,
+                                  const CapacitySettings& settings) {
+  checkCapacitySettings(defaultRuns(backends), settings);
+}
+
+/// The capacity of each run in turn, on the calling thread (seconds to minutes: run it off the
+/// GUI thread). A run is a backend with its own options (a run spec, e.g.
+/// "chipmunk:spatial_hash=1", so one backend can be measured in several settings side by side);
+/// its options are set after those of `settings`, so they win where both name a key.
+/// `progress` is called after every ball count measured; a stop request ends the run within one
+/// step, and the runs not finished are left out (the one cut short is reported with
+/// outcome.cancelled). Each result is labelled with its run spec's text.
 std::vector<CapacityResult> measureCapacity(
-    std::span<const BackendInfo> backends, const CapacitySettings& settings,
+    std::span<const RunSpec> runs, const CapacitySettings& settings,
     const std::function<void(const CapacityProgress&)>& progress = {}, std::stop_token stop = {});
+
+/// Every backend of `backends` at its defaults.
+inline std::vector<CapacityResult> measureCapacity(
+    std::span<const BackendInfo> backends, const CapacitySettings& settings,
+    const std::function<void(const CapacityProgress&)>& progress = {}, std::stop_token stop = {}) {
+  return measureCapacity(defaultRuns(backends), settings, progress, std::move(stop));
+}
 
 /// The `capacity --csv` header, as DESIGN.md states it.
 inline constexpr std::string_view kCapacityCsvHeader = "backend,balls,median_step_ms";
