@@ -26,4 +26,15 @@ HashSizing hashSizing(std::span<const double> radii, const Box& box);
 /// Switches the space (still empty, or not) to the spatial hash `sizing`.
 void useSpatialHash(cpSpace* space, const HashSizing& sizing);
 
+/// m: how far from the origin a ball may be while the spatial hash indexes it. The hash turns a
+/// coordinate into a cell number with an int cast (cpSpaceHash.c, floor_int), which overflows
+/// past 2^31 cells: at x < −2^31 cells floor_int returns INT_MAX, and the loop over the cells of
+/// the ball's box (for i = l … r) never ends — a ball that leaves through a wall that is off
+/// and keeps falling under strong gravity got there in the random invariants (seconds, at 1e-4 m
+/// cells). Half of that range, 2^30 cells, leaves room for the ball's own extent; beyond it the
+/// adapter moves the space to the BB-tree, which has no such limit (chipmunk_stepping.cpp).
+inline double hashSafeCoordinate(double cell) {
+  return 0x1p30 * cell;
+}
+
 }  // namespace fooball::chipmunk_detail

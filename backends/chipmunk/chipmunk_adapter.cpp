@@ -16,6 +16,8 @@ ChipmunkAdapter::ChipmunkAdapter() : Backend(chipmunkOptionSpecs()) {
 void ChipmunkAdapter::load(const Scene& scene) {
   box_ = scene.box;
   worldSettings_ = scene.world;
+  hashLeft_ = false;
+  hashesLeft_ = 0;
   build(scene.balls);
   contacts_ = {};
   dragLoss_ = 0.0;
@@ -46,10 +48,18 @@ void ChipmunkAdapter::build(std::span<const BallDef> balls) {
   }
   setContactCorrection(space, radii_, settings_.collisionSlop, settings_.collisionBias);
   hashCell_ = 0.0;
-  if (settings_.spatialHash) {
+  if (settings_.spatialHash && !hashLeft_) {
     const HashSizing sizing = hashSizing(radii_, box_);
-    useSpatialHash(space, sizing);
-    hashCell_ = sizing.cell;
+    const double limit = hashSafeCoordinate(sizing.cell);  // m
+    hashLeft_ = std::any_of(balls.begin(), balls.end(), [limit](const BallDef& ball) {
+      return !(std::abs(ball.position.x) < limit && std::abs(ball.position.y) < limit);
+    });
+    if (hashLeft_) {
+      ++hashesLeft_;
+    } else {
+      useSpatialHash(space, sizing);
+      hashCell_ = sizing.cell;
+    }
   }
   wallThickness_ = chooseWallThickness();
   walls_.sync(*space_, box_, worldSettings_.walls, wallThickness_);
@@ -92,6 +102,17 @@ void ChipmunkAdapter::setWorld(const WorldSettings& world) {
 }
 
 void ChipmunkAdapter::setBall(std::size_t index, const BallDef& ball) {
+  if (hashCell_ > 0.0) {
+    const double limit = hashSafeCoordinate(hashCell_);  // m
+    if (!(std::abs(ball.position.x) < limit && std::abs(ball.position.y) < limit)) {
+      // Too far for the spatial hash (broadphase.h): a new space on the BB-tree.
+      std::vector<BallDef> balls = currentBalls();
+      balls[index] = ball;
+      hashLeft_ = true;
+      build(balls);
+      return;
+    }
+  }
   const BallBody& body = balls_[index];
   cpBodySetPosition(body.body, cpv(ball.position.x, ball.position.y));
   cpBodySetVelocity(body.body, cpv(ball.velocity.x, ball.velocity.y));
@@ -119,6 +140,7 @@ std::vector<Diagnostic> ChipmunkAdapter::diagnostics() const {
   return {
       {"chipmunk_steps", static_cast<double>(chipmunkSteps_)},
       {"balls_brought_back", static_cast<double>(ballsBroughtBack_)},
+      {"spatial_hash_left", static_cast<double>(hashesLeft_)},
   };
 }
 
@@ -126,6 +148,7 @@ void ChipmunkAdapter::optionsChanged() {
   const bool hashBefore = settings_.spatialHash;
   settings_ = readChipmunkSettings(options_);
   if (settings_.spatialHash != hashBefore) {
+    hashLeft_ = false;
     // Chipmunk can switch a space to a hash but has no call back to the tree: a new space.
     const std::vector<BallDef> balls = currentBalls();
     build(balls);

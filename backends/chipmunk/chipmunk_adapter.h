@@ -47,6 +47,9 @@ class ChipmunkAdapter final : public Backend {
   double chooseWallThickness() const;
   /// Gives every ball velocity the impulse forces[i]·dt (forces in N), before any Chipmunk step.
   void applyImpulses(double dt, std::span<const Vec2> forces);
+  /// Moves the space from the spatial hash to the BB-tree if a ball has gone beyond the hash's
+  /// safe coordinates (broadphase.h). Returns whether it did.
+  bool leaveHashIfFar();
 
   ChipmunkSettings settings_;
   ContactCounts contacts_;  ///< declared before space_, whose handlers point to it
@@ -63,8 +66,10 @@ class ChipmunkAdapter final : public Backend {
   double dragLoss_ = 0.0;               ///< J
   std::uint64_t chipmunkSteps_ = 0;     ///< cpSpaceStep calls since load()
   std::uint64_t ballsBroughtBack_ = 0;  ///< by WallContainment since load()
+  std::uint64_t hashesLeft_ = 0;        ///< spaces moved off the spatial hash since load()
   double hashCell_ = 0.0;               ///< m, the spatial hash's cell (0: BB-tree)
-  double wallThickness_ = 0.0;          ///< m, chosen when the space is built
+  bool hashLeft_ = false;       ///< a ball went too far for the hash: the BB-tree until load()
+  double wallThickness_ = 0.0;  ///< m, chosen when the space is built
 };
 
 }  // namespace fooball::chipmunk_detail

@@ -20,6 +20,9 @@
 // the random invariants (tests/robustness), which set every option anywhere in its range, throw
 // nothing at Chipmunk that it aborts on.
 
+#include <cmath>
+
+#include "broadphase.h"
 #include "chipmunk_adapter.h"
 #include "flight.h"
 #include "wall_containment.h"
@@ -33,14 +36,14 @@ void ChipmunkAdapter::step(double dt, std::span<const Vec2> forces) {
   const Walls& on = worldSettings_.walls;
   const bool anyWall = on.left || on.right || on.bottom || on.top;
   WallContainment walls(box_, on, worldSettings_.gravity, wallThickness_);
-  cpSpace* space = space_->get();
   int stepsTaken = 0;
   while (stepsTaken < settings_.substeps && !stopRequested()) {
+    if (hashCell_ > 0.0) leaveHashIfFar();
     if (kick) {
       dragLoss_ +=
           kickVelocities(bodies_, masses_, worldSettings_.gravity, worldSettings_.airResistance, h);
     }
-    cpSpaceStep(space, h);
+    cpSpaceStep(space_->get(), h);
     if (anyWall) {
       for (std::size_t i = 0; i < bodies_.size(); ++i)
         walls.contain(bodies_[i], radii_[i], masses_[i]);
@@ -51,6 +54,18 @@ void ChipmunkAdapter::step(double dt, std::span<const Vec2> forces) {
   ballsBroughtBack_ += walls.ballsBroughtBack();
   contacts_.wallCollisions += walls.wallCollisions();
   contacts_.wallImpulse += walls.impulse();
+}
+
+bool ChipmunkAdapter::leaveHashIfFar() {
+  const double limit = hashSafeCoordinate(hashCell_);  // m
+  for (cpBody* body : bodies_) {
+    const cpVect p = cpBodyGetPosition(body);
+    if (std::abs(p.x) < limit && std::abs(p.y) < limit) continue;
+    hashLeft_ = true;
+    build(currentBalls());  // counts the move
+    return true;
+  }
+  return false;
 }
 
 void ChipmunkAdapter::applyImpulses(double dt, std::span<const Vec2> forces) {
