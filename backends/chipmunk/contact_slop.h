@@ -35,6 +35,9 @@ namespace fooball::chipmunk_detail {
 ///   31.6 m/s² here, to 3.16 with the Chipmunk-like values;
 /// - energy change after 20 s: preset `default` −4.6% here, −7.7% Chipmunk-like; `rain` −3.8%
 ///   and −6.1%; `dense` −0.12% and −0.13%; `gas` −1.3e-7 and −1.2e-7;
+/// - the price, in a gas: the standard gas of 2'000 balls over 600 steps (docs/performance.md)
+///   loses 2.4e-5 here against 1.2e-5 Chipmunk-like, and at one substep 6.7e-4 against 1.5e-4.
+///   Balls pushed fully apart meet their next neighbours at other times; measured, not derived;
 /// - random invariants (tests/robustness): no case gains more energy with these than with the
 ///   Chipmunk-like values (worst 7.5e-4 and 7.8e-4, of 2'000 cases).
 /// A full correction can overshoot where one ball has many contacts (the iterations correct each
