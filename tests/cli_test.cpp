@@ -430,6 +430,20 @@ TEST_F(CliTest, QuietPrintsNothingOnStdout) {
   EXPECT_THAT(result.err, IsEmpty());
 }
 
+TEST_F(CliTest, QuietPrintsNothingWithAnyBackend) {
+  // A backend's library must not write to the CLI's streams: Debian's Chipmunk prints a banner
+  // on stdout when a process creates its first space (backends/chipmunk/chipmunk_banner.h).
+  for (const fooball::BackendInfo& backend : fooball::registeredBackends()) {
+    const std::string name(backend.name);
+    SCOPED_TRACE(name);
+    const CliResult result = runCli({"run", "--scene", twoBallsScene().string(), "--backend", name,
+                                     "--duration", "0.05", "--quiet"});
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_THAT(result.out, IsEmpty());
+    EXPECT_THAT(result.err, IsEmpty());
+  }
+}
+
 TEST_F(CliTest, EveryBackendRunsACollisionAndKeepsMomentumAndEnergy) {
   // One ball–ball collision and no walls, no gravity: momentum is conserved exactly by the
   // physics and energy by restitution 1, so what the metrics show is the backend's own error,
