@@ -109,6 +109,7 @@ void ChipmunkAdapter::setBall(std::size_t index, const BallDef& ball) {
       std::vector<BallDef> balls = currentBalls();
       balls[index] = ball;
       hashLeft_ = true;
+      ++hashesLeft_;
       build(balls);
       return;
     }

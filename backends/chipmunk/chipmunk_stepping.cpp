@@ -62,7 +62,8 @@ bool ChipmunkAdapter::leaveHashIfFar() {
     const cpVect p = cpBodyGetPosition(body);
     if (std::abs(p.x) < limit && std::abs(p.y) < limit) continue;
     hashLeft_ = true;
-    build(currentBalls());  // counts the move
+    ++hashesLeft_;
+    build(currentBalls());
     return true;
   }
   return false;
