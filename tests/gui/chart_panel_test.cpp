@@ -273,12 +273,17 @@ void expectResidualChartReads(ChartPanel& panel, double size, int samples, doubl
       << what << " on " << axisMin << ".." << axisMax << " × " << factor;
   const QStringList labels = panel.displayedValueTickLabels(ChartPanel::kResidualChart);
   EXPECT_GE(labels.size(), 2) << what;
-  const QRegularExpression wholeNumber(QStringLiteral("^-?[1-9][0-9]{0,4}$|^0$"));
+  // Whole numbers, or halves with one decimal; never "-0".
+  const QRegularExpression wholeNumber(
+      QStringLiteral("^-?[1-9][0-9]{0,4}$|^0$|^-?[0-9]{1,5}\\.[05]$"));
   for (const QString& label : labels)
     EXPECT_TRUE(wholeNumber.match(label).hasMatch())
         << what << ": label '" << label.toStdString() << "' on " << title.toStdString();
+  for (const QString& label : labels)
+    EXPECT_FALSE(label == QStringLiteral("-0.0")) << what;
   if (axisMin < 0.0 && axisMax > 0.0) {
-    EXPECT_TRUE(labels.contains(QStringLiteral("0"))) << what;
+    EXPECT_TRUE(labels.contains(QStringLiteral("0")) || labels.contains(QStringLiteral("0.0")))
+        << what;
   }
 }
 

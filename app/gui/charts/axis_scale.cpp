@@ -102,7 +102,8 @@ AxisScale scrollingTimeScale(double start, double end, double window) {
 int displayExponent(const AxisScale& scale) {
   const double magnitude = std::max(std::abs(scale.min), std::abs(scale.max));
   if (!(scale.tickInterval > 0.0) || !std::isfinite(scale.tickInterval)) return 0;
-  if (scale.tickInterval >= 1.0 && magnitude < 1e5) return 0;
+  // Halves add exactly too: 0.5 apart reads better than 5 apart in tenths.
+  if (scale.tickInterval >= 0.5 && magnitude < 1e5) return 0;
   // The nudge keeps log10(1e-15) = −14.9999… from giving 10⁻¹⁵ steps of 10 × 10⁻¹⁶.
   return static_cast<int>(std::floor(std::log10(scale.tickInterval) + 1e-9));
 }

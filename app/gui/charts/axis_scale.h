@@ -67,16 +67,17 @@ AxisScale growingTimeScale(double start, double end);
 AxisScale scrollingTimeScale(double start, double end, double window);
 
 /// The power of ten the values of `scale` are drawn in, chosen so that every tick is a whole
-/// number: 0 while the ticks are whole numbers below 10⁵ already (energies of 0, 5, 10 J), else
-/// the power of the tick interval, so ticks read 1, 2 or 5 apart and the axis title names the
-/// power once ("residual (10⁻¹⁵ J)": ticks −20, −10, 0, 10, 20).
+/// number or a half: 0 while the ticks are such numbers below 10⁵ already (energies of 0, 5,
+/// 10 J; momenta of −0.5, 0, 0.5 N·s), else the power of the tick interval, so ticks read 1, 2 or
+/// 5 apart and the axis title names the power once ("residual (10⁻¹⁵ J)": ticks −20, −10, 0, 10).
 /// Qt Charts cannot draw tiny values as they are: it treats ranges narrower than 1e-12 as empty
 /// and compares ends with qFuzzyCompare(1 + a, 1 + b), so an axis for residuals near 1e-14 J kept
 /// reading ±1 while the curve filled it. And it places ticks by adding the interval over and
 /// over, so fractional ticks read "-8e-28" or "-0.0" for 0: whole numbers add exactly.
 int displayExponent(const AxisScale& scale);
 
-/// `scale` in units of 10^`exponent` (displayExponent): ends and interval are whole numbers.
+/// `scale` in units of 10^`exponent` (displayExponent): ends and interval are whole numbers, or
+/// halves at exponent 0.
 AxisScale inDisplayUnits(const AxisScale& scale, int exponent);
 
 /// " (10⁻¹⁴ J)", " (J)", " (×10⁻¹⁵)" or "": what an axis title adds after its quantity's name for

@@ -381,8 +381,10 @@ void TimeChart::fitValueAxis() {
   } else {
     valueScale_ = followValues(shownValues_, valueScale_, ticks);
     const int exponent = displayExponent(*valueScale_);
-    // Whole-number ticks in these units (displayExponent): no decimals to show.
-    applyScale(linearAxis_, inDisplayUnits(*valueScale_, exponent), QStringLiteral("%.0f"));
+    // Whole-number or half ticks in these units (displayExponent): one decimal at most.
+    const AxisScale shown = inDisplayUnits(*valueScale_, exponent);
+    applyScale(linearAxis_, shown,
+               shown.tickInterval >= 1.0 ? QStringLiteral("%.0f") : QStringLiteral("%.1f"));
     if (exponent != displayExponent_) {
       displayExponent_ = exponent;
       updateValueAxisTitle();
