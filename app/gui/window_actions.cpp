@@ -144,6 +144,7 @@ void WindowActions::createMenus() {
   QMenu* help = bar->addMenu(tr("&Help"));
   help->addAction(tr("&Mouse and keys"), QKeySequence::HelpContents, this,
                   [this] { showMouseAndKeys(&window_); });
+  help->addAction(tr("&Reading the charts"), this, [this] { showReadingTheCharts(&window_); });
   help->addAction(tr("&About FooBall"), this, [this] { showAbout(&window_); });
   help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 

@@ -12,6 +12,7 @@
 #include "fooball/version.h"
 #include "frame_loop.h"
 #include "gui_fixture.h"
+#include "registry.h"
 #include "simulation_view.h"
 #include "view_text.h"
 #include "window_settings.h"
@@ -183,10 +184,8 @@ TEST_F(MainWindowTest, ResetLayoutBringsBackHiddenAndFloatingDocks) {
       << "the box is the largest thing again";
 }
 
-TEST_F(MainWindowTest, AboutShowsTheVersion) {
-  open(stillBalls());
-  QAction* about = menuAction(*window, QStringLiteral("&Help"), QStringLiteral("&About FooBall"));
-  ASSERT_NE(about, nullptr);
+/// The text of the message box `action` opens (read, then closed, from inside its event loop).
+QString messageBoxText(QAction& action) {
   QString shown;
   QTimer::singleShot(0, [&] {
     for (QWidget* widget : QApplication::topLevelWidgets()) {
@@ -196,9 +195,30 @@ TEST_F(MainWindowTest, AboutShowsTheVersion) {
       }
     }
   });
-  about->trigger();  // modal: returns once the timer has read and closed the box
+  action.trigger();  // modal: returns once the timer has read and closed the box
+  return shown;
+}
+
+TEST_F(MainWindowTest, AboutShowsTheVersion) {
+  open(stillBalls());
+  QAction* about = menuAction(*window, QStringLiteral("&Help"), QStringLiteral("&About FooBall"));
+  ASSERT_NE(about, nullptr);
+  const QString shown = messageBoxText(*about);
   EXPECT_TRUE(shown.contains(QStringLiteral("FooBall ") + fromView(kVersion)))
       << shown.toStdString();
+}
+
+TEST_F(MainWindowTest, HelpExplainsTheChartsTheBaselineAndEveryMethod) {
+  open(stillBalls());
+  QAction* help =
+      menuAction(*window, QStringLiteral("&Help"), QStringLiteral("&Reading the charts"));
+  ASSERT_NE(help, nullptr);
+  const QString shown = messageBoxText(*help);
+  for (const char* topic : {"residual", "method's own error", "chaos baseline", "Divergence"})
+    EXPECT_TRUE(shown.contains(QString::fromUtf8(topic))) << topic;
+  for (const BackendInfo& backend : registeredBackends())
+    EXPECT_TRUE(shown.contains(QStringLiteral("<b>%1</b>").arg(fromView(backend.name))))
+        << backend.name;
 }
 
 TEST_F(MainWindowTest, SpaceShortcutPausesAndContinues) {
