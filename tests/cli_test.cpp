@@ -280,12 +280,14 @@ TEST_F(CliTest, OutOfRangeBackendOptionExitsTwo) {
 }
 
 TEST_F(CliTest, NonPositiveOrNonFiniteDurationAndDtExitTwo) {
+  // --duration 0 is no error: it steps nothing (DurationZeroStepsNothing...).
   for (const char* flag : {"--duration", "--dt"}) {
-    for (const char* value : {"-1", "0", "nan", "inf", "-0.01", "1e999", "ten"}) {
+    for (const char* value : {"-1", "nan", "inf", "-0.01", "1e999", "ten"}) {
       SCOPED_TRACE(std::string(flag) + " " + value);
       EXPECT_THAT(expectBadInput({"run", flag, value}), HasSubstr(flag));
     }
   }
+  EXPECT_THAT(expectBadInput({"run", "--dt", "0"}), HasSubstr("--dt"));
 }
 
 TEST_F(CliTest, DurationShorterThanHalfAStepExitsTwo) {
@@ -696,6 +698,109 @@ TEST_F(CliTest, FailureMapWritesOneCsvRowPerScenePointAndAChart) {
 TEST_F(CliTest, FailureMapUnknownSweepExitsTwoNamingItAndTheKnownSweeps) {
   EXPECT_THAT(expectBadInput({"failure-map", "--sweep", "wobble"}),
               AllOf(HasSubstr("wobble"), HasSubstr("tunnelling"), HasSubstr("pile")));
+}
+
+// --- Saved states: saved_from and --duration 0 ---------------------------------------------------
+
+TEST_F(CliTest, DurationZeroStepsNothingAndSavesTheSceneAsItWasRead) {
+  const fs::path saved = pathOf("saved.json");
+  const CliResult result =
+      runCli({"run", "--preset", "rain", "--duration", "0", "--save", saved.string()});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_THAT(result.out, ContainsRegex("steps: +0\n"));
+  const fooball::Scene preset = fooball::loadPreset("rain");
+  const fooball::Scene written = fooball::loadSceneFile(saved);
+  EXPECT_FALSE(written.savedFrom.has_value()) << "nothing ran, so nothing was saved from a run";
+  ASSERT_EQ(written.balls.size(), preset.balls.size());
+  for (std::size_t i = 0; i < preset.balls.size(); ++i) {
+    EXPECT_EQ(written.balls[i].position, preset.balls[i].position);
+    EXPECT_EQ(written.balls[i].velocity, preset.balls[i].velocity);
+  }
+  EXPECT_EQ(fooball::writeScene(preset), readText(saved));
+}
+
+TEST_F(CliTest, SaveRecordsTheBackendEveryOptionAndTheTime) {
+  const std::string name = backendWithSubsteps();
+  ASSERT_FALSE(name.empty()) << "no registered backend has substeps";
+  const fs::path saved = pathOf("saved.json");
+  ASSERT_EQ(runCli({"run", "--scene", twoBallsScene().string(), "--backend", name, "--substeps",
+                    "3", "--duration", "0.5", "--dt", "0.01", "--save", saved.string(), "--quiet"})
+                .exitCode,
+            0);
+  const fooball::Scene scene = fooball::loadSceneFile(saved);
+  ASSERT_TRUE(scene.savedFrom.has_value());
+  EXPECT_EQ(scene.savedFrom->backend, name);
+  EXPECT_EQ(scene.savedFrom->time, 0.5);
+  const auto backend = fooball::createBackend(name);
+  EXPECT_EQ(scene.savedFrom->options.size(), backend->options().specs().size());
+  EXPECT_EQ(scene.savedFrom->options.at("substeps"), 3.0);
+}
+
+/// Every registered backend's state of the rain preset after `seconds`, saved by `run --save`.
+TEST_F(CliTest, EveryBackendsSavedStateReopensOnEveryBackendAndWritesBackByteForByte) {
+  for (const fooball::BackendInfo& from : fooball::registeredBackends()) {
+    const std::string name(from.name);
+    SCOPED_TRACE("saved from " + name);
+    const fs::path saved = pathOf("rain-" + name + ".json");
+    const CliResult save = runCli({"run", "--preset", "rain", "--backend", name, "--duration", "3",
+                                   "--save", saved.string(), "--quiet"});
+    ASSERT_EQ(save.exitCode, 0) << save.err;
+    const std::string bytes = readText(saved);
+    const fooball::Scene scene = fooball::loadSceneFile(saved);
+    ASSERT_TRUE(scene.savedFrom.has_value());
+    EXPECT_EQ(scene.savedFrom->backend, name);
+    EXPECT_EQ(scene.savedFrom->time, 3.0);
+    for (const fooball::BackendInfo& on : fooball::registeredBackends()) {
+      const std::string onName(on.name);
+      SCOPED_TRACE("on " + onName);
+      const fs::path again = pathOf("again-" + name + "-" + onName + ".json");
+      const CliResult reopen = runCli({"run", "--scene", saved.string(), "--backend", onName,
+                                       "--duration", "0", "--save", again.string(), "--quiet"});
+      ASSERT_EQ(reopen.exitCode, 0) << reopen.err;
+      EXPECT_LE(lineCount(reopen.err), 1u) << "at most the one warning line: " << reopen.err;
+      EXPECT_EQ(readText(again), bytes) << "--duration 0 --save changed the file";
+      const CliResult run = runCli(
+          {"run", "--scene", saved.string(), "--backend", onName, "--duration", "0.1", "--quiet"});
+      EXPECT_EQ(run.exitCode, 0) << run.err;
+    }
+  }
+}
+
+/// Two balls 12% of their radius deep, the first 20% of its radius into the floor.
+constexpr const char* kPressedBalls = R"(
+  "box": { "width": 16.0, "height": 9.0 },
+  "balls": [
+    { "position": [2.0, 0.4], "radius": 0.5 },
+    { "position": [2.94, 2.0], "radius": 0.5 }, { "position": [2.0, 2.0], "radius": 0.5 }
+  ]
+})";
+
+TEST_F(CliTest, SavedStateBeyondTheHandWrittenRulesRunsWithOneWarningLine) {
+  const fs::path scene =
+      writeFile("pressed.json", std::string(R"({"format": "fooball-scene", "version": 1,
+         "saved_from": {"backend": "elastic", "options": {"substeps": 4}, "time": 12.5},)") +
+                                    kPressedBalls);
+  const fs::path again = pathOf("again.json");
+  const CliResult result = runCli(
+      {"run", "--scene", scene.string(), "--duration", "0", "--save", again.string(), "--quiet"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(result.err, "fooball-cli: warning: " + scene.string() +
+                            ": saved from a running simulation: balls[0] crosses the bottom wall "
+                            "by 0.1 m, 20% of its radius\n");
+  const fooball::Scene written = fooball::loadSceneFile(again);
+  ASSERT_TRUE(written.savedFrom.has_value());
+  EXPECT_EQ(written.savedFrom->time, 12.5);
+  EXPECT_EQ(written.balls.at(1).position, (fooball::Vec2{2.94, 2.0}));
+  EXPECT_EQ(runCli({"run", "--scene", scene.string(), "--duration", "0.1", "--quiet"}).exitCode, 0);
+}
+
+TEST_F(CliTest, HandWrittenSceneBeyondTheRulesIsStillRefused) {
+  const fs::path scene = writeFile(
+      "pressed.json", std::string(R"({"format": "fooball-scene", "version": 1,)") + kPressedBalls);
+  EXPECT_EQ(expectBadInput({"run", "--scene", scene.string(), "--duration", "0"}),
+            "fooball-cli: error: " + scene.string() +
+                ": balls[0].position: the ball crosses the bottom wall by 0.1 m, more than 5% of "
+                "its radius\n");
 }
 
 }  // namespace

@@ -306,7 +306,7 @@ TEST(SceneFileErrors, VersionIsCheckedBeforeUnknownKeys) {
 TEST(SceneFileErrors, UnknownTopLevelKeyIsNamedWithTheKnownKeys) {
   EXPECT_EQ(errorFrom(sceneWith(R"("gravty": [0, -9.81])")),
             R"(scene.json: unknown key "gravty" (known keys: format, version, name, box, walls, )"
-            R"(gravity, air_resistance, ball_collisions, balls, random_balls))");
+            R"(gravity, air_resistance, ball_collisions, balls, random_balls, saved_from))");
 }
 
 TEST(SceneFileErrors, UnknownKeysInNestedObjectsAreNamed) {
@@ -337,7 +337,7 @@ TEST(SceneFileErrors, RepeatedKeyIsAnErrorNotLastOneWins) {
 TEST(SceneFileErrors, UnknownKeysAreShownPrintable) {
   EXPECT_EQ(errorFrom(sceneWith("\"a\\u0001b\": 1")),
             R"(scene.json: unknown key "a\x01b" (known keys: format, version, name, box, walls, )"
-            R"(gravity, air_resistance, ball_collisions, balls, random_balls))");
+            R"(gravity, air_resistance, ball_collisions, balls, random_balls, saved_from))");
 }
 
 // --- Errors: JSON types ------------------------------------------------------------------------
@@ -801,6 +801,208 @@ TEST(SceneValidation, ValidateBallHoldsTheBallInsideTheWallsThatAreOn) {
   Walls topOff;
   topOff.top = false;
   EXPECT_NO_THROW(validateBall(ballAt({8.0, 10.0}), box, topOff, "balls[3]"));
+}
+
+// --- States saved from a running simulation (saved_from) ---------------------------------------
+
+constexpr std::string_view kSavedFrom =
+    R"("saved_from": {"backend": "elastic", "options": {"substeps": 4}, "time": 12.5})";
+
+/// A scene with saved_from whose balls are `balls` (JSON objects, comma-separated).
+std::string savedSceneWithBalls(std::string_view balls) {
+  return sceneWith(std::string(kSavedFrom) + R"(, "balls": [)" + std::string(balls) + "]");
+}
+
+/// The warning savedStateWarning gives for the scene `text` holds, or "(no warning)".
+std::string warningFor(std::string_view text) {
+  const std::string warning = savedStateWarning(parseScene(text, "scene.json"), "scene.json");
+  return warning.empty() ? "(no warning)" : warning;
+}
+
+/// What the app saves: a state with every kind of value and saved_from.
+Scene savedState() {
+  Scene scene = awkwardScene();
+  scene.world.ballCollisions = true;
+  scene.world.walls = Walls{};
+  scene.savedFrom = SavedFrom{"box2d", {{"substeps", 8.0}, {"bullets", 0.0}, {"scale", 0.1}}, 1.25};
+  return scene;
+}
+
+TEST(SavedStates, DesignDocumentExampleParses) {
+  const Scene scene = parseScene(sceneWith(kSavedFrom), "scene.json");
+  ASSERT_TRUE(scene.savedFrom.has_value());
+  EXPECT_EQ(*scene.savedFrom, (SavedFrom{"elastic", {{"substeps", 4.0}}, 12.5}));
+}
+
+TEST(SavedStates, HandWrittenScenesHaveNoSavedFrom) {
+  EXPECT_FALSE(parseScene(sceneWith(), "scene.json").savedFrom.has_value());
+  EXPECT_EQ(writeScene(parseScene(sceneWith(), "scene.json")).find("saved_from"),
+            std::string::npos);
+}
+
+TEST(SavedStates, OptionsMayBeLeftOut) {
+  const Scene scene =
+      parseScene(sceneWith(R"("saved_from": {"backend": "exact", "time": 0})"), "scene.json");
+  ASSERT_TRUE(scene.savedFrom.has_value());
+  EXPECT_TRUE(scene.savedFrom->options.empty());
+  EXPECT_EQ(scene.savedFrom->backend, "exact");
+}
+
+TEST(SavedStates, WritesSavedFromBeforeTheBallsWithOptionsByName) {
+  Scene scene;
+  scene.savedFrom = SavedFrom{"elastic", {{"threads", 2.0}, {"substeps", 4.0}}, 12.5};
+  const std::string text = writeScene(scene);
+  EXPECT_NE(text.find("  \"ball_collisions\": true,\n  \"saved_from\": {\"backend\": \"elastic\", "
+                      "\"options\": {\"substeps\": 4, \"threads\": 2}, \"time\": 12.5},\n  "
+                      "\"balls\": []"),
+            std::string::npos)
+      << text;
+}
+
+TEST(SavedStates, WriteReadWriteGivesTheSameBytesAndEveryBit) {
+  const Scene scene = savedState();
+  const std::string written = writeScene(scene);
+  const Scene read = parseScene(written, "written");
+  expectSameScene(scene, read);
+  ASSERT_TRUE(read.savedFrom.has_value());
+  EXPECT_EQ(*read.savedFrom, *scene.savedFrom);
+  EXPECT_EQ(writeScene(read), written);
+}
+
+TEST(SavedStates, OptionValuesKeepEveryBitIncludingTheSignOfZero) {
+  Scene scene;
+  scene.savedFrom =
+      SavedFrom{"x", {{"a", -0.0}, {"b", 1e300}, {"c", 5e-324}, {"d", 1.0 / 3.0}, {"e", -7.0}}, 0};
+  const Scene read = parseScene(writeScene(scene), "written");
+  ASSERT_TRUE(read.savedFrom.has_value());
+  for (const auto& [name, value] : scene.savedFrom->options)
+    expectSameBits(value, read.savedFrom->options.at(name), name);
+  EXPECT_EQ(writeScene(read), writeScene(scene));
+}
+
+TEST(SavedStates, OverlappingBallsOpenWithAWarningNamingTheDeepestPair) {
+  // balls[1] and balls[0]: 0.06 m deep, 12%; balls[3] and balls[2]: 0.03 m, 6%.
+  const std::string text = savedSceneWithBalls(R"({"position": [2, 2], "radius": 0.5},
+                                                  {"position": [2.94, 2], "radius": 0.5},
+                                                  {"position": [6, 2], "radius": 0.5},
+                                                  {"position": [6.97, 2], "radius": 0.5})");
+  const Scene scene = parseScene(text, "scene.json");
+  EXPECT_EQ(scene.balls[1].position, (Vec2{2.94, 2.0}));
+  EXPECT_EQ(warningFor(text),
+            "scene.json: saved from a running simulation: balls[1] overlaps balls[0] by 12% of "
+            "the smaller radius");
+}
+
+TEST(SavedStates, BallsPressedIntoOrPastAWallOpenWithAWarning) {
+  EXPECT_EQ(warningFor(savedSceneWithBalls(R"({"position": [8, 0.4], "radius": 0.5},
+                                              {"position": [0.45, 4], "radius": 0.5})")),
+            "scene.json: saved from a running simulation: balls[0] crosses the bottom wall by "
+            "0.1 m, 20% of its radius");
+  EXPECT_EQ(warningFor(savedSceneWithBalls(R"({"position": [8, -3], "radius": 0.5})")),
+            "scene.json: saved from a running simulation: balls[0] crosses the bottom wall by "
+            "3.5 m, 700% of its radius");
+}
+
+TEST(SavedStates, TheWorstCaseIsTheDeepestOfWallsAndPairs) {
+  const std::string wall = R"({"position": [8, 0.4], "radius": 0.5})";  // 20% past the wall
+  EXPECT_EQ(warningFor(savedSceneWithBalls(wall + R"(, {"position": [2, 2], "radius": 0.5},
+                                                      {"position": [2.94, 2], "radius": 0.5})")),
+            "scene.json: saved from a running simulation: balls[0] crosses the bottom wall by "
+            "0.1 m, 20% of its radius");
+  EXPECT_EQ(warningFor(savedSceneWithBalls(wall + R"(, {"position": [2, 2], "radius": 0.5},
+                                                      {"position": [2.8, 2], "radius": 0.5})")),
+            "scene.json: saved from a running simulation: balls[2] overlaps balls[1] by 40% of "
+            "the smaller radius");
+}
+
+TEST(SavedStates, NoWarningForWhatAHandWrittenSceneMayHold) {
+  EXPECT_EQ(warningFor(savedSceneWithBalls(R"({"position": [0.48, 4], "radius": 0.5},
+                                              {"position": [2, 2], "radius": 0.5},
+                                              {"position": [2.98, 2], "radius": 0.5})")),
+            "(no warning)");
+  // Past a wall that is off, and overlapping while collisions are off: normal states.
+  EXPECT_EQ(warningFor(sceneWith(std::string(kSavedFrom) +
+                                 R"(, "walls": {"bottom": false}, "ball_collisions": false,
+                                    "balls": [{"position": [8, -40], "radius": 0.5},
+                                              {"position": [2, 2], "radius": 0.5},
+                                              {"position": [2, 2], "radius": 0.5}])")),
+            "(no warning)");
+  // A hand-written scene never warns: it is refused instead.
+  EXPECT_EQ(savedStateWarning(parseScene(sceneWith(), "x"), "x"), "");
+}
+
+TEST(SavedStates, HandWrittenScenesKeepTheOverlapAndInsideTheBoxRules) {
+  EXPECT_EQ(errorFrom(sceneWithBalls(R"({"position": [2, 2], "radius": 0.5},
+                                        {"position": [2.94, 2], "radius": 0.5})")),
+            "scene.json: balls[1]: overlaps balls[0] by 12% of the smaller radius (the limit is "
+            "5%)");
+  EXPECT_EQ(errorFrom(sceneWithBalls(R"({"position": [8, 0.4], "radius": 0.5})")),
+            "scene.json: balls[0].position: the ball crosses the bottom wall by 0.1 m, more than "
+            "5% of its radius");
+}
+
+TEST(SavedStates, EveryOtherRuleStillHolds) {
+  EXPECT_EQ(errorFrom(savedSceneWithBalls(R"({"position": [2, 2], "radius": -1})")),
+            "scene.json: balls[0].radius: must be > 0 (got -1)");
+  EXPECT_EQ(errorFrom(savedSceneWithBalls(R"({"position": [2, 2], "radius": 1, "mass": 0})")),
+            "scene.json: balls[0].mass: must be > 0 (got 0)");
+  EXPECT_EQ(errorFrom(savedSceneWithBalls(R"({"position": [2, 2], "radius": 1, "spin": 0})")),
+            "scene.json: balls[0]: unknown key \"spin\" (known keys: position, velocity, radius, "
+            "mass, color)");
+  EXPECT_EQ(errorFrom(savedSceneWithBalls(R"({"position": [2, "2"], "radius": 1})")),
+            "scene.json: balls[0].position[1]: must be a number (got the string \"2\")");
+  Scene scene = savedState();
+  scene.balls[0].velocity.x = kNaN;
+  EXPECT_EQ(validationError(scene), "state: balls[0].velocity[0]: must be finite (got nan)");
+  scene = savedState();
+  scene.balls.assign(kMaxBalls + 1, ballAt({2.0, 2.0}));
+  EXPECT_EQ(validationError(scene),
+            "state: balls: has 2000001 balls, more than the limit of 2000000");
+}
+
+TEST(SavedStates, MalformedSavedFromIsAnError) {
+  const auto errorWith = [](std::string_view savedFrom) {
+    return errorFrom(sceneWith(R"("saved_from": )" + std::string(savedFrom)));
+  };
+  EXPECT_EQ(errorWith(R"("elastic")"),
+            "scene.json: saved_from: must be an object (got the string \"elastic\")");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic", "time": 1, "when": 2})"),
+            "scene.json: saved_from: unknown key \"when\" (known keys: backend, options, time)");
+  EXPECT_EQ(errorWith(R"({"time": 1})"),
+            "scene.json: saved_from: missing required key \"backend\"");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic"})"),
+            "scene.json: saved_from: missing required key \"time\"");
+  EXPECT_EQ(errorWith(R"({"backend": 3, "time": 1})"),
+            "scene.json: saved_from.backend: must be a string (got the number 3)");
+  EXPECT_EQ(errorWith(R"({"backend": "", "time": 1})"),
+            "scene.json: saved_from.backend: must be a backend name of 1 to 64 letters, digits, "
+            "'_' or '-' (got \"\")");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic:substeps=4", "time": 1})"),
+            "scene.json: saved_from.backend: must be a backend name of 1 to 64 letters, digits, "
+            "'_' or '-' (got \"elastic:substeps=4\")");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic", "time": -0.5})"),
+            "scene.json: saved_from.time: must be >= 0 (got -0.5)");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic", "time": "12.5"})"),
+            "scene.json: saved_from.time: must be a number (got the string \"12.5\")");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic", "time": 1e999})"),
+            "scene.json: saved_from.time: the number 1e999 is beyond the range of a double");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic", "options": [4], "time": 1})"),
+            "scene.json: saved_from.options: must be an object (got an array of 1 element)");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic", "options": {"substeps": true}, "time": 1})"),
+            "scene.json: saved_from.options.substeps: must be a number (got true)");
+  EXPECT_EQ(errorWith(R"({"backend": "elastic", "options": {"sub steps\n": 4}, "time": 1})"),
+            "scene.json: saved_from.options: must be an option name of 1 to 64 letters, digits, "
+            "'_' or '-' (got \"sub steps\\x0a\")");
+}
+
+TEST(SavedStates, NonFiniteSavedFromValuesAreRefusedInMemory) {
+  Scene scene = savedState();
+  scene.savedFrom->time = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(validationError(scene), "state: saved_from.time: must be finite (got inf)");
+  scene = savedState();
+  scene.savedFrom->options["substeps"] = kNaN;
+  EXPECT_EQ(validationError(scene), "state: saved_from.options.substeps: must be finite (got nan)");
+  EXPECT_THROW(writeScene(scene), SceneError);
 }
 
 // --- Files -------------------------------------------------------------------------------------

@@ -1,6 +1,7 @@
 #include "compare_command.h"
 
 #include <chrono>
+#include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -147,7 +148,7 @@ void compareCommand(const CompareOptions& options, std::ostream& out) {
   const RunOptions shared = sceneAndClock(options);
   checkRunNumbers(shared);
   const std::vector<RunSpec> specs = parseSpecs(options.runs);
-  const Scene scene = loadRunScene(shared);
+  const Scene scene = loadRunScene(shared, std::cerr);
   if (options.csvPath) checkWritableFile(*options.csvPath, "--csv");
   if (options.chartPath) checkWritableFile(*options.chartPath, "--chart");
 

@@ -53,7 +53,9 @@ void addRunFlags(CLI::App& run, RunOptions& options, RunFlags& flags) {
   run.add_option("--backend", options.backendName, "physics backend (see 'list')")
       ->type_name("NAME")
       ->capture_default_str();
-  run.add_option("--duration", options.duration, "simulated time to run, in seconds")
+  run.add_option("--duration", options.duration,
+                 "simulated time to run, in seconds (0: load and check the scene, step nothing, "
+                 "and with --save write it back unchanged)")
       ->type_name("SECONDS")
       ->capture_default_str();
   flags.dtFlag = run.add_option("--dt", flags.dt,

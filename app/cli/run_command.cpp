@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 #include <optional>
 
 #include "fooball/scene_file.h"
@@ -79,13 +80,17 @@ double speedMomentum(const Simulation& simulation) {
 }  // namespace
 
 void runCommand(const RunOptions& options, std::ostream& out) {
-  checkRunNumbers(options);
+  // --duration 0 steps nothing: the scene is read and checked, the backend takes it, and --save
+  // writes it back as it was read (saved_from and all, bit for bit), not as the backend holds it
+  // (Box2D's state is float).
+  const bool stepsNothing = options.duration == 0.0;
+  checkRunNumbers(options, true);
   std::unique_ptr<Backend> backend = configuredBackend(options);
-  const Scene scene = loadRunScene(options);
+  const Scene scene = loadRunScene(options, std::cerr);
 
   Simulation simulation(scene, std::move(backend));
   if (options.dt) simulation.setDt(*options.dt);
-  const std::uint64_t steps = stepCount(options.duration, simulation.dt());
+  const std::uint64_t steps = stepsNothing ? 0 : stepCount(options.duration, simulation.dt());
 
   if (options.savePath) checkWritableFile(*options.savePath, "--save");
   std::optional<MetricsCsv> csv;
@@ -109,7 +114,10 @@ void runCommand(const RunOptions& options, std::ostream& out) {
   progress.clear();
 
   if (csv) csv->close();
-  if (options.savePath) saveSceneFile(simulation.scene(), *options.savePath);
+  if (options.savePath) {
+    saveSceneFile(stepsNothing ? scene : simulation.savedScene(options.backendName),
+                  *options.savePath);
+  }
   if (options.quiet) return;
 
   summary.wallSeconds = timing.wallSeconds;

@@ -41,8 +41,9 @@ void applyOption(Backend& backend, const RunOptions& options, const std::string&
 
 }  // namespace
 
-void checkRunNumbers(const RunOptions& options) {
-  checkPositiveFinite(options.duration, "--duration");
+void checkRunNumbers(const RunOptions& options, bool zeroDurationSteps) {
+  if (!(zeroDurationSteps && options.duration == 0.0))
+    checkPositiveFinite(options.duration, "--duration");
   if (options.dt) checkPositiveFinite(*options.dt, "--dt");
   if (options.every < 1) {
     throw UsageError("--every: must be a whole number >= 1 (got " + std::to_string(options.every) +
@@ -81,9 +82,12 @@ std::unique_ptr<Backend> configuredBackend(const RunOptions& options) {
   return backend;
 }
 
-Scene loadRunScene(const RunOptions& options) {
-  if (options.scenePath) return loadSceneFile(*options.scenePath);
-  return loadPreset(options.presetName);
+Scene loadRunScene(const RunOptions& options, std::ostream& warnings) {
+  if (!options.scenePath) return loadPreset(options.presetName);
+  Scene scene = loadSceneFile(*options.scenePath);
+  const std::string warning = savedStateWarning(scene, options.scenePath->string());
+  if (!warning.empty()) warnings << "fooball-cli: warning: " << warning << '\n';
+  return scene;
 }
 
 std::string sceneSource(const RunOptions& options) {

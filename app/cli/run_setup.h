@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,8 @@
 namespace fooball::cli {
 
 /// Checks --duration, --dt and --every on their own (finite, positive, ≥ 1); throws UsageError.
-void checkRunNumbers(const RunOptions& options);
+/// With `zeroDurationSteps` (run), --duration 0 is allowed too: it steps nothing.
+void checkRunNumbers(const RunOptions& options, bool zeroDurationSteps = false);
 
 /// round(duration / dt), checked to be in [1, kMaxRunSteps]; throws UsageError.
 std::uint64_t stepCount(double duration, double dt);
@@ -24,7 +26,9 @@ std::uint64_t stepCount(double duration, double dt);
 std::unique_ptr<Backend> configuredBackend(const RunOptions& options);
 
 /// The scene of --scene or --preset; throws SceneError naming the file or preset and the place.
-Scene loadRunScene(const RunOptions& options);
+/// A file saved from a running simulation that breaks a hand-written scene's rules loads, and
+/// its warning (savedStateWarning) goes to `warnings` as "fooball-cli: warning: …".
+Scene loadRunScene(const RunOptions& options, std::ostream& warnings);
 
 /// How the summary names where the scene came from: the file path or "preset 'NAME'".
 std::string sceneSource(const RunOptions& options);

@@ -72,7 +72,12 @@ StartupOptions startupOptions(const CommandLine& line, bool remember) {
   options.rememberSettings = remember;
   QSettings settings;
   if (line.sceneFile) {
-    options.scene = loadSceneFile(QFile::encodeName(*line.sceneFile).toStdString());
+    const std::string path = QFile::encodeName(*line.sceneFile).toStdString();
+    options.scene = loadSceneFile(path);
+    // A state saved from a running simulation that a hand-written file could not hold: said
+    // once, on stderr like the errors, and the app starts on it.
+    const std::string warning = savedStateWarning(options.scene, path);
+    if (!warning.empty()) std::cerr << "fooball: warning: " << warning << '\n';
     options.sourceName = QFileInfo(*line.sceneFile).fileName();
   } else {
     QString name = line.preset.value_or(fromView(kDefaultPreset));

@@ -57,6 +57,11 @@ void RunController::restart() {
   emit ballsChanged();
 }
 
+Scene RunController::savedScene() {
+  settle();
+  return group_.savedScene();
+}
+
 void RunController::setRunSpec(int index, const RunSpec& spec) {
   settle();
   group_.setSpec(std::size_t(index), spec);

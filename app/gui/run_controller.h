@@ -60,6 +60,9 @@ class RunController : public QObject {
   void loadScene(const Scene& scene);
   /// Back to the loaded scene at t = 0, keeping the current world settings and attractors.
   void restart();
+  /// Run 0's state with saved_from (RunGroup::savedScene): what File → Save writes. Gives up a
+  /// step in flight first, so the file holds the state shown and the runs go on from it.
+  Scene savedScene();
 
   /// Run `index` continues on `spec` from its own state. Throws std::invalid_argument.
   void setRunSpec(int index, const RunSpec& spec);

@@ -324,6 +324,29 @@ std::optional<DeepOverlap> findDeepOverlap(std::span<const BallDef> balls, doubl
   return found;
 }
 
+std::optional<DeepOverlap> deepestOverlap(std::span<const BallDef> balls) {
+  SizeClassGrids grids(balls.size(), [&](std::size_t i) {
+    return Disk{balls[i].position, balls[i].radius};
+  });
+  std::optional<DeepOverlap> deepest;
+  grids.forEachNearbyPairAnyOrder(
+      [&](std::uint32_t i, std::uint32_t j, const Disk& first, const Disk& second) {
+        const double reach = first.radius + second.radius;
+        const double distanceSquared = lengthSquared(first.position - second.position);
+        if (distanceSquared >= reach * reach) return;
+        const double depth = reach - std::sqrt(distanceSquared);
+        const DeepOverlap pair{std::min(i, j), std::max(i, j),
+                               depth / std::min(first.radius, second.radius)};
+        // Depth first, then the indices: the same pair whatever order the grids visit them in.
+        if (!deepest || pair.depthFraction > deepest->depthFraction ||
+            (pair.depthFraction == deepest->depthFraction &&
+             std::pair(pair.first, pair.second) < std::pair(deepest->first, deepest->second))) {
+          deepest = pair;
+        }
+      });
+  return deepest;
+}
+
 double deepestPairOverlap(std::span<const Vec2> positions, std::span<const double> radii) {
   SizeClassGrids grids(positions.size(), [&](std::size_t i) {
     return Disk{positions[i], radii[i]};

@@ -25,6 +25,11 @@ struct DeepOverlap {
 /// same pair.
 std::optional<DeepOverlap> findDeepOverlap(std::span<const BallDef> balls, double slop);
 
+/// The deepest overlapping pair (on a tie, the one with the lowest indices), or nothing when no
+/// two balls overlap. The grids of findDeepOverlap, searched to the end: O(N log N) while cells
+/// hold a handful of balls, as in any state a simulation saves.
+std::optional<DeepOverlap> deepestOverlap(std::span<const BallDef> balls);
+
 /// The deepest overlap of two balls (radii in m), as a fraction of the smaller radius; 0 when
 /// none overlap. The grids of findDeepOverlap, so a few big balls among many small ones cost no
 /// more than equal balls.

@@ -6,6 +6,8 @@
 //   to 1; its balls follow the explicit ones, so their indices and colours continue theirs;
 // - counts and seeds are JSON integers: 2.0 is refused, like any other non-integer;
 // - a key repeated in one object is an error (plain JSON would keep the last silently);
+// - "saved_from" needs "backend" and "time"; "options" defaults to none. Its names are words of
+//   letters, digits, '_' and '-', as run specs write them (NAME:KEY=VALUE); see scene.h, SavedFrom;
 // - "format" and "version" are checked first, so a file of another kind or a newer version
 //   says so before anything else; then JSON types, then values (scene_validation.cpp).
 
@@ -136,6 +138,24 @@ RandomBalls readRandomBalls(const Json& object, const Place& place) {
   return spec;
 }
 
+SavedFrom readSavedFrom(const Json& object, const Place& place) {
+  requireObject(object, place);
+  checkKnownKeys(object, place, {"backend", "options", "time"});
+  SavedFrom from;
+  from.backend = readString(requireMember(object, place, "backend"), place.key("backend"));
+  if (const Json* options = findMember(object, "options")) {
+    const Place optionsPlace = place.key("options");
+    requireObject(*options, optionsPlace);
+    for (const auto& [name, value] : options->items()) {
+      // The name first: the place of a bad value quotes it, and must stay one printable line.
+      checkSpecName(name, optionsPlace, "an option name");
+      from.options[name] = readNumber(value, optionsPlace.key(name));
+    }
+  }
+  from.time = readNumber(requireMember(object, place, "time"), place.key("time"));
+  return from;
+}
+
 Scene readScene(std::string_view text) {
   BallCollector collector;
   const Json root = parseSceneJson(
@@ -145,7 +165,7 @@ Scene readScene(std::string_view text) {
   checkFormatAndVersion(root, top);
   checkKnownKeys(root, top,
                  {"format", "version", "name", "box", "walls", "gravity", "air_resistance",
-                  "ball_collisions", "balls", "random_balls"});
+                  "ball_collisions", "balls", "random_balls", "saved_from"});
   Scene scene;
   if (const Json* name = findMember(root, "name")) scene.name = readString(*name, top.key("name"));
   scene.box = readBox(requireMember(root, top, "box"), top.key("box"));
@@ -159,6 +179,9 @@ Scene readScene(std::string_view text) {
   }
   if (const Json* ballCollisions = findMember(root, "ball_collisions")) {
     scene.world.ballCollisions = readBool(*ballCollisions, top.key("ball_collisions"));
+  }
+  if (const Json* savedFrom = findMember(root, "saved_from")) {
+    scene.savedFrom = readSavedFrom(*savedFrom, top.key("saved_from"));
   }
   if (const Json* balls = findMember(root, "balls"); balls != nullptr && !balls->is_array()) {
     failAt(top.key("balls"), "must be an array (got " + describeJson(*balls) + ")");

@@ -3,8 +3,12 @@
 // meets the same rules as one read from a file. Where DESIGN.md is silent:
 // - radius is at most kMaxBoxSide (a bigger ball fits no box, and its area would overflow);
 // - the overlap rule holds only while ball_collisions is on: with it off, balls pass through
-//   each other, and a state saved mid-pass must load back.
+//   each other, and a state saved mid-pass must load back;
+// - a scene with saved_from keeps every rule but the overlap and inside-the-box ones: whatever a
+//   running simulation produced must load back exactly (savedStateWarning reports the worst);
+//   saved_from's own values are checked like the rest (finite time >= 0, finite options).
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -72,11 +76,9 @@ void checkWorld(const WorldSettings& world) {
   }
 }
 
-}  // namespace
-
-void checkBall(const BallDef& ball, const Box& box, const Walls& walls, const Place& place) {
-  const Place position = place.key("position");
-  checkFinite(ball.position, position);
+/// The rules a ball meets wherever it is: finite, positive sizes and mass, a 24-bit colour.
+void checkBallValues(const BallDef& ball, const Place& place) {
+  checkFinite(ball.position, place.key("position"));
   checkFinite(ball.velocity, place.key("velocity"));
   checkLength(ball.radius, place.key("radius"));
   checkPositive(ball.mass, place.key("mass"));
@@ -85,6 +87,38 @@ void checkBall(const BallDef& ball, const Box& box, const Walls& walls, const Pl
     std::snprintf(hex.data(), hex.size(), "0x%x", ball.color);
     failAt(place.key("color"), "must be 0xRRGGBB (got " + std::string(hex.data()) + ")");
   }
+}
+
+bool isSpecNameCharacter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-';
+}
+
+void checkSavedFrom(const SavedFrom& from, const Place& place) {
+  checkSpecName(from.backend, place.key("backend"), "a backend name");
+  const Place options = place.key("options");
+  for (const auto& [name, value] : from.options) {
+    checkSpecName(name, options, "an option name");
+    checkFinite(value, options.key(name));
+  }
+  const Place time = place.key("time");
+  checkFinite(from.time, time);
+  if (from.time < 0.0) failAt(time, "must be >= 0 (got " + exactNumberText(from.time) + ")");
+}
+
+}  // namespace
+
+void checkSpecName(std::string_view name, const Place& place, std::string_view what) {
+  if (name.empty() || name.size() > kMaxSpecNameBytes ||
+      !std::all_of(name.begin(), name.end(), isSpecNameCharacter)) {
+    failAt(place, "must be " + std::string(what) + " of 1 to " + std::to_string(kMaxSpecNameBytes) +
+                      " letters, digits, '_' or '-' (got " + quotedText(name) + ")");
+  }
+}
+
+void checkBall(const BallDef& ball, const Box& box, const Walls& walls, const Place& place) {
+  checkBallValues(ball, place);
+  const Place position = place.key("position");
   const double r = ball.radius;
   const Vec2 p = ball.position;
   if (walls.left) checkWallDepth(r - p.x, r, "left", position);
@@ -102,9 +136,17 @@ void checkScene(const Scene& scene) {
     failAt(balls, "has " + std::to_string(scene.balls.size()) + " balls, more than the limit of " +
                       std::to_string(kMaxBalls));
   }
-  for (std::size_t i = 0; i < scene.balls.size(); ++i)
-    checkBall(scene.balls[i], scene.box, scene.world.walls, balls.index(i));
-  if (!scene.world.ballCollisions) return;
+  const bool saved = scene.savedFrom.has_value();
+  if (saved) checkSavedFrom(*scene.savedFrom, top.key("saved_from"));
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    const Place ball = balls.index(i);
+    if (saved) {
+      checkBallValues(scene.balls[i], ball);
+    } else {
+      checkBall(scene.balls[i], scene.box, scene.world.walls, ball);
+    }
+  }
+  if (saved || !scene.world.ballCollisions) return;
   if (const auto overlap = findDeepOverlap(scene.balls, kContactSlop)) {
     failAt(balls.index(overlap->second),
            "overlaps balls[" + std::to_string(overlap->first) + "] by " +

@@ -1,7 +1,8 @@
 // Writing scene files: version 1, every key explicit, every ball explicit (random_balls is
 // never written). Doubles use the shortest text that reads back to the same bits, with ".0"
 // on whole numbers so they stay JSON floats (and "-0.0" keeps its sign). One ball per line
-// keeps a million-ball file compact and still easy to diff.
+// keeps a million-ball file compact and still easy to diff. "saved_from", when the scene has
+// it, comes before the balls, so it is seen at the top of the file.
 
 #include <array>
 #include <cerrno>
@@ -70,6 +71,35 @@ void appendBall(std::string& out, const BallDef& ball, const Place& place) {
   out += '}';
 }
 
+/// An option's value as JSON writes it: whole numbers as integers ("substeps": 4, as a user
+/// would write a count), anything else as the shortest round-trip text; -0.0 keeps its sign.
+void appendOptionValue(std::string& out, double value, const Place& place) {
+  if (!std::isfinite(value)) {
+    failAt(place, "cannot be written: JSON has no " + exactNumberText(value));
+  }
+  out += value == 0.0 && std::signbit(value) ? "-0.0" : exactNumberText(value);
+}
+
+/// {"backend": "elastic", "options": {"substeps": 4, "threads": 1}, "time": 12.5}, the options
+/// in name order (a std::map): write → read → write gives the same bytes.
+void appendSavedFrom(std::string& out, const SavedFrom& from, const Place& place) {
+  out += "{\"backend\": ";
+  appendString(out, from.backend, place.key("backend"));
+  out += ", \"options\": {";
+  const Place options = place.key("options");
+  bool first = true;
+  for (const auto& [name, value] : from.options) {
+    out += first ? "" : ", ";
+    first = false;
+    appendString(out, name, options);
+    out += ": ";
+    appendOptionValue(out, value, options.key(name));
+  }
+  out += "}, \"time\": ";
+  appendNumber(out, from.time, place.key("time"));
+  out += '}';
+}
+
 [[noreturn]] void failToWrite(const std::filesystem::path& path, std::string_view reason) {
   throw SceneError(withSource(path.string(), "cannot write: " + std::string(reason)));
 }
@@ -103,6 +133,10 @@ std::string writeScene(const Scene& scene) {
   appendNumber(out, world.airResistance, top.key("air_resistance"));
   out += ",\n  \"ball_collisions\": ";
   appendBool(out, world.ballCollisions);
+  if (scene.savedFrom) {
+    out += ",\n  \"saved_from\": ";
+    appendSavedFrom(out, *scene.savedFrom, top.key("saved_from"));
+  }
   out += ",\n  \"balls\": [";
   const Place balls = top.key("balls");
   for (std::size_t i = 0; i < scene.balls.size(); ++i) {

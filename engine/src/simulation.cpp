@@ -71,12 +71,22 @@ void Simulation::setBackend(std::unique_ptr<Backend> next) {
 }
 
 Scene Simulation::scene() const {
-  Scene scene{name_, box_, world_, {}};
+  Scene scene{name_, box_, world_, {}, {}};
   scene.balls.resize(ballCount());
   for (std::size_t i = 0; i < ballCount(); ++i) {
     scene.balls[i] = {positions_[i], velocities_[i], radii_[i], masses_[i], colors_[i]};
   }
   return scene;
+}
+
+Scene Simulation::savedScene(std::string_view backendName) const {
+  Scene saved = scene();
+  SavedFrom from{std::string(backendName), {}, time()};
+  const OptionSet& options = backend_->options();
+  for (const OptionSpec& spec : options.specs())
+    from.options[spec.name] = options.value(spec.name);
+  saved.savedFrom = std::move(from);
+  return saved;
 }
 
 void Simulation::setWorld(const WorldSettings& world) {

@@ -87,8 +87,11 @@ class RunGroup {
   /// Back to the loaded scene at t = 0, keeping the world settings, attractors and ball count
   /// of now (setBallCount's balls).
   void restart();
-  /// Run 0's state as a scene (what File → Save writes).
+  /// Run 0's state as a scene.
   Scene scene() const { return run(0).scene(); }
+  /// Run 0's state with saved_from (its spec's backend, every option, the time): what File →
+  /// Save writes. Needs the backends: not while steps are out (stepping()).
+  Scene savedScene() const { return run(0).savedScene(spec(0).backend); }
 
   const WorldSettings& world() const { return run(0).world(); }
   void setWorld(const WorldSettings& world);

@@ -1,7 +1,9 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,11 +52,30 @@ struct Box {
   friend bool operator==(const Box&, const Box&) = default;
 };
 
+/// Where a state saved from a running simulation came from: a file's "saved_from" (DESIGN.md,
+/// "Scene files"). A scene that has one may hold whatever a running simulation can produce —
+/// balls overlapping each other or pressed into a wall beyond the contact slop — and loads with
+/// a warning (savedStateWarning) instead of the hand-written scene's errors.
+struct SavedFrom {
+  /// The backend's registry name, e.g. "elastic". The engine knows no backend by name
+  /// (DESIGN.md), so it checks only that this is a non-empty string: it is a record of where the
+  /// state came from, and a file saved by a build with a backend this build lacks still opens.
+  std::string backend;
+  /// Every option of that backend with the value it had, by name (not only those off their
+  /// defaults: the record stays true when a later build changes a default). A map, because a
+  /// JSON object has no order: sorted by name, write → read → write gives the same bytes.
+  std::map<std::string, double> options;
+  double time = 0.0;  ///< s of simulated time the saving run had run since its scene was loaded
+  friend bool operator==(const SavedFrom&, const SavedFrom&) = default;
+};
+
 struct Scene {
   std::string name;
   Box box;
   WorldSettings world;
   std::vector<BallDef> balls;
+  /// Set in files FooBall wrote from a running simulation; absent in hand-written ones.
+  std::optional<SavedFrom> savedFrom;
 };
 
 /// Limits stated by the scene format; inputs beyond them are errors, not clamps.

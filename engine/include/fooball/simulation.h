@@ -4,6 +4,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fooball/backend.h"
@@ -49,8 +50,13 @@ class Simulation {
   Backend& backend() { return *backend_; }
   const Backend& backend() const { return *backend_; }
 
-  /// The current state as a scene (what --save writes).
+  /// The current state as a scene.
   Scene scene() const;
+  /// scene() with saved_from: `backendName` (the backend's registry name, which only the caller
+  /// knows: the engine knows no backend by name), every option of the backend with its value,
+  /// and time(). What File → Save and run --save write. Needs the backend: not while a step is
+  /// out (stepping()).
+  Scene savedScene(std::string_view backendName) const;
   /// 0xRRGGBB per ball, scene order: drawing only, kept here so backends need not.
   std::span<const std::uint32_t> colours() const { return colors_; }
 
