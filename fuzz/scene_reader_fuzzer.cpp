@@ -1,5 +1,6 @@
 // libFuzzer target for parseScene (engine/include/fooball/scene_file.h). Every input must either
-// parse to a scene that passes validateScene and survives writeScene → parseScene bit for bit,
+// parse to a scene that passes validateScene and survives writeScene → parseScene bit for bit
+// (saved_from included) and writeScene → parseScene → writeScene byte for byte,
 // or be refused with a SceneError whose message is one non-empty line. Anything else — a crash,
 // a sanitizer report, another exception, a multi-line or empty message — aborts.
 
@@ -36,8 +37,18 @@ bool sameScene(const Scene& a, const Scene& b) {
       !sameBits(a.box.height, b.box.height) || !sameBits(a.world.gravity, b.world.gravity) ||
       !sameBits(a.world.airResistance, b.world.airResistance) ||
       a.world.ballCollisions != b.world.ballCollisions || a.world.walls != b.world.walls ||
-      a.balls.size() != b.balls.size()) {
+      a.balls.size() != b.balls.size() || a.savedFrom.has_value() != b.savedFrom.has_value()) {
     return false;
+  }
+  if (a.savedFrom) {
+    const SavedFrom& x = *a.savedFrom;
+    const SavedFrom& y = *b.savedFrom;
+    if (x.backend != y.backend || !sameBits(x.time, y.time) || x.options.size() != y.options.size())
+      return false;
+    for (const auto& [name, value] : x.options) {
+      const auto other = y.options.find(name);
+      if (other == y.options.end() || !sameBits(value, other->second)) return false;
+    }
   }
   for (std::size_t i = 0; i < a.balls.size(); ++i) {
     const BallDef& x = a.balls[i];
@@ -66,8 +77,15 @@ void checkAccepted(const Scene& scene) {
   std::string written;
   try {
     written = writeScene(scene);
-    if (!sameScene(parseScene(written, "round trip"), scene))
+    const Scene reread = parseScene(written, "round trip");
+    if (!sameScene(reread, scene))
       fail("writeScene → parseScene changed the scene", written.substr(0, 2000));
+    if (writeScene(reread) != written)
+      fail("writeScene → parseScene → writeScene changed the bytes", written.substr(0, 2000));
+    // The warning of a saved state is one line too.
+    const std::string warning = savedStateWarning(reread, "fuzz");
+    if (warning.find_first_of("\r\n") != std::string::npos)
+      fail("savedStateWarning is not one line", warning);
   } catch (const SceneError& error) {
     fail("parseScene refuses what writeScene wrote", error.what());
   }
