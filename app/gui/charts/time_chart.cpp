@@ -156,7 +156,7 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
         chart_->size().width() - plotArea.right() - (margins.right() - kChartMargins.right())};
     markerOverlay_->plotAreaChanged();
     // Qt elides tick labels that have no room: a plot that shrank gets fewer ticks.
-    if (valueTicksFor(plotArea) != valueTicks_) fitValueAxis();
+    if (valueTicksFor(plotArea) != valueTicks_ && fitValueAxis()) showCurves();
   });
 }
 
@@ -371,7 +371,7 @@ int TimeChart::valueTicksFor(const QRectF& plotArea) {
   return std::clamp(static_cast<int>(plotArea.height() / kPixelsPerValueTick), 2, kMaxValueTicks);
 }
 
-void TimeChart::fitValueAxis() {
+bool TimeChart::fitValueAxis() {
   const int ticks = valueTicksFor(chart_->plotArea());
   if (ticks != valueTicks_) forgetValueScale();
   valueTicks_ = ticks;
@@ -388,9 +388,10 @@ void TimeChart::fitValueAxis() {
     if (exponent != displayExponent_) {
       displayExponent_ = exponent;
       updateValueAxisTitle();
-      showCurves();
+      return true;
     }
   }
+  return false;
 }
 
 int TimeChart::pointCount(int run) const {

@@ -130,9 +130,9 @@ class TimeChart : public QChartView {
   /// Tall enough for the title, legend, tick labels and axis titles shown, and a plot as tall
   /// as the value axis' title: a shorter chart elides its labels to "…".
   void updateMinimumHeight();
-  /// Fits the value axis to shownValues_ for the plot's current height; a new power of ten
-  /// redraws the curves in it.
-  void fitValueAxis();
+  /// Fits the value axis to shownValues_ for the plot's current height. Returns whether the
+  /// curves' power of ten changed (their series then need showCurves()).
+  bool fitValueAxis();
   /// Hands every shown curve's points to its series, divided by 10^displayExponent_.
   void showCurves();
   void updateValueAxisTitle();
