@@ -11,7 +11,6 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include <QTimer>
 #include <functional>
 
 #include "gui_fixture.h"
@@ -78,18 +77,22 @@ TEST_F(Benchmark, ToolsMenuOpensTheDialog) {
 TEST_F(Benchmark, TinyBudgetRunGivesACapacityWithoutBlockingTheWindow) {
   open(stillBalls());
   BenchmarkDialog* dialog = openDialog();
-  // 1 ms: a few thousand balls, found in well under a second, yet long enough (several counts
-  // of ten steps) for the event loop to come round while the search runs.
-  choose(dialog, QStringLiteral("elastic"), QStringLiteral("1"));
+  // 4 ms: tens of thousands of balls, found in about a second of wall time in any build (each
+  // probe near the budget takes ten steps of ~4 ms), so the event loop comes round many times
+  // while the search runs even on a loaded machine that deschedules the GUI thread for a while.
+  choose(dialog, QStringLiteral("elastic"), QStringLiteral("4"));
 
-  // A timer of the GUI thread: it ticks during the run only if the search runs elsewhere.
-  int ticksDuringRun = 0;
-  QTimer ticker;
-  ticker.setInterval(0);  // fires on every pass of the event loop
-  QObject::connect(&ticker, &QTimer::timeout, [&] {
-    if (dialog->running()) ++ticksDuringRun;
-  });
-  ticker.start();
+  // A heartbeat of posted events on the GUI thread: it beats during the run only if the search
+  // runs elsewhere. Posted events, not a zero-interval QTimer: Qt's glib event dispatcher runs
+  // timers at idle priority once one has fired, and the worker's progress events can starve it.
+  int beatsDuringRun = 0;
+  bool beating = true;
+  std::function<void()> beat = [&] {
+    if (!beating) return;
+    if (dialog->running()) ++beatsDuringRun;
+    QMetaObject::invokeMethod(dialog, beat, Qt::QueuedConnection);
+  };
+  QMetaObject::invokeMethod(dialog, beat, Qt::QueuedConnection);
 
   QTest::mouseClick(dialog->startButton(), Qt::LeftButton);
   EXPECT_TRUE(dialog->running()) << "Start returned before the search ended";
@@ -97,14 +100,16 @@ TEST_F(Benchmark, TinyBudgetRunGivesACapacityWithoutBlockingTheWindow) {
   EXPECT_TRUE(dialog->cancelButton()->isEnabled());
   EXPECT_FALSE(dialog->startButton()->isEnabled());
   ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 20.0 * slowdown()));
+  beating = false;
+  QCoreApplication::processEvents();  // the last beat sees `beating` off and posts no more
 
-  EXPECT_GT(ticksDuringRun, 0) << "the event loop ran while the search did";
+  EXPECT_GT(beatsDuringRun, 1) << "the event loop ran while the search did";
   EXPECT_FALSE(runs().paused()) << "the simulation continues after the run";
   EXPECT_EQ(dialog->progressBar()->value(), dialog->progressBar()->maximum());
   ASSERT_EQ(dialog->results().size(), 1u);
   EXPECT_EQ(dialog->results()[0].backend, "elastic");
   EXPECT_GT(dialog->results()[0].outcome.balls, 0u);
-  EXPECT_LE(dialog->results()[0].outcome.medianStepMs, 1.0);
+  EXPECT_LE(dialog->results()[0].outcome.medianStepMs, 4.0);
   ASSERT_EQ(dialog->resultsTable()->rowCount(), 1);
   EXPECT_EQ(dialog->resultsTable()->item(0, 0)->text(), QStringLiteral("elastic"));
   EXPECT_EQ(dialog->resultsTable()->item(0, 1)->text().toULongLong(),
