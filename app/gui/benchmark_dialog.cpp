@@ -1,5 +1,6 @@
 #include "benchmark_dialog.h"
 
+#include <QAbstractAxis>
 #include <QChart>
 #include <QChartView>
 #include <QCloseEvent>
@@ -9,6 +10,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLegend>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPixmap>
@@ -38,8 +40,29 @@ constexpr int kElapsedRefreshMs = 200;
 QString noteOf(const measure::SearchOutcome& outcome) {
   if (outcome.reachedMaxBalls) return QObject::tr("the scene format's limit: capacity is higher");
   if (outcome.timedOut) return QObject::tr("time limit: best count so far");
-  if (outcome.cancelled) return QObject::tr("cancelled");
   return {};
+}
+
+/// The capacity chart (light, as `fooball-cli capacity --chart` draws it for pages) in the app's
+/// dark theme; the series keep their colours.
+void styleDark(QChart& chart) {
+  const QColor background(0x16, 0x17, 0x1c);
+  const QColor plotArea(0x05, 0x05, 0x07);
+  const QColor text(0xe6, 0xe7, 0xeb);
+  const QColor label(0xb4, 0xb7, 0xc0);
+  const QColor grid(0x2c, 0x2e, 0x36);
+  chart.setBackgroundBrush(background);
+  chart.setPlotAreaBackgroundBrush(plotArea);
+  chart.setPlotAreaBackgroundVisible(true);
+  chart.setTitleBrush(text);
+  chart.legend()->setLabelColor(label);
+  for (QAbstractAxis* axis : chart.axes()) {
+    axis->setLabelsColor(label);
+    axis->setTitleBrush(text);
+    axis->setGridLineColor(grid);
+    axis->setMinorGridLineColor(grid);
+    axis->setLinePenColor(label);
+  }
 }
 
 }  // namespace
@@ -68,7 +91,7 @@ BenchmarkDialog::BenchmarkDialog(QWidget* parent) : QDialog(parent) {
   status_->setToolTip(tr("The backend and ball count measured last, and the time elapsed"));
   error_ = new QLabel;
   error_->setObjectName(QStringLiteral("benchmarkError"));
-  error_->setStyleSheet(QStringLiteral("color: #c03030;"));
+  error_->setStyleSheet(QStringLiteral("color: #ff7b7b;"));
   error_->setWordWrap(true);
   error_->hide();
   connect(start_, &QPushButton::clicked, this, &BenchmarkDialog::start);
@@ -95,6 +118,7 @@ BenchmarkDialog::BenchmarkDialog(QWidget* parent) : QDialog(parent) {
                          .arg(double(clock_.elapsed()) / 1000.0, 0, 'f', 1));
   });
 
+  showResults();
   updateButtons();
   resize(760, 720);
 }
@@ -138,6 +162,9 @@ QWidget* BenchmarkDialog::createResults() {
   table_ = new QTableWidget(0, 4);
   table_->setHorizontalHeaderLabels(
       {tr("backend"), tr("balls"), tr("median step (ms)"), tr("note")});
+  // Each column as wide as its header or its widest cell, whichever is wider, so the header
+  // reads in full before the first result too; the note takes the rest.
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -221,13 +248,14 @@ bool BenchmarkDialog::start() {
   error_->hide();
   settings_ = settings;
   results_.clear();
+  liveResults_.clear();
+  running_ = true;
   showResults();
   progress_->setValue(0);
   progressText_ = tr("Starting %1").arg(fromView(chosen.front().name));
   status_->setText(progressText_);
   clock_.start();
   elapsedTimer_->start();
-  running_ = true;
   emit runStarted();
 
   worker_ = std::jthread([this, chosen = std::move(chosen), settings](std::stop_token stop) {
@@ -267,6 +295,19 @@ void BenchmarkDialog::cancel() {
 void BenchmarkDialog::showProgress(const QString& backend, std::size_t index, std::size_t count,
                                    std::size_t balls, double medianStepMs, double fraction) {
   if (!running() || worker_.get_stop_token().stop_requested()) return;
+  // The chart fills in while the search goes: every count measured so far, and the best one
+  // within the budget as the capacity found so far.
+  const std::string name = backend.toStdString();
+  if (liveResults_.empty() || liveResults_.back().backend != name) {
+    liveResults_.push_back({name, {}, {}});
+  }
+  measure::SearchOutcome& outcome = liveResults_.back().outcome;
+  outcome.probes.push_back({balls, medianStepMs});
+  if (medianStepMs <= settings_.budgetMs && balls > outcome.balls) {
+    outcome.balls = balls;
+    outcome.medianStepMs = medianStepMs;
+  }
+  showChart(liveResults_);
   progress_->setValue(static_cast<int>(std::lround(fraction * kProgressSteps)));
   progressText_ = tr("%1 (%2 of %3): %L4 balls, median step %5 ms")
                       .arg(backend)
@@ -283,14 +324,18 @@ void BenchmarkDialog::finishRun(std::vector<measure::CapacityResult> results,
   if (worker_.joinable()) worker_.join();
   running_ = false;
   elapsedTimer_->stop();
+  // A search cut short measured no capacity: its best count so far is no result.
+  std::erase_if(results,
+                [](const measure::CapacityResult& result) { return result.outcome.cancelled; });
   results_ = std::move(results);
+  liveResults_.clear();
   const double seconds = double(clock_.elapsed()) / 1000.0;
   if (!failure.isEmpty()) {
     showError(failure);
     status_->setText(tr("Failed after %1 s").arg(seconds, 0, 'f', 1));
   } else if (cancelled) {
     status_->setText(
-        tr("Cancelled after %1 s; the backends finished are shown").arg(seconds, 0, 'f', 1));
+        tr("Cancelled after %1 s; only the backends finished are shown").arg(seconds, 0, 'f', 1));
   } else {
     progress_->setValue(kProgressSteps);
     status_->setText(tr("Done in %1 s").arg(seconds, 0, 'f', 1));
@@ -315,11 +360,25 @@ void BenchmarkDialog::showResults() {
     cell(3, noteOf(result.outcome));
     ++row;
   }
-  table_->resizeColumnsToContents();
+  showChart(results_);
+}
 
+void BenchmarkDialog::showChart(std::span<const measure::CapacityResult> results) {
   QChart* previous = chartView_->chart();
-  QChart* chart = plots::makeCapacityChart(results_, settings_);
+  QChart* chart = plots::makeCapacityChart(results, settings_);
   chart->setTitle(plots::capacityChartTitle(settings_));
+  bool measured = false;
+  for (const measure::CapacityResult& result : results)
+    measured = measured || !result.outcome.probes.empty();
+  if (!measured) {
+    // Axes with nothing on them read as a broken chart: say what will appear instead.
+    for (QAbstractAxis* axis : chart->axes())
+      axis->hide();
+    chart->setTitle(running() ? tr("Measuring the first ball count…")
+                              : tr("Press Start: each backend's step time appears here as each "
+                                   "ball count is measured"));
+  }
+  styleDark(*chart);
   chartView_->setChart(chart);  // the view owns the new chart and gives the old one back
   delete previous;
 }

@@ -3,6 +3,7 @@
 #include <QDialog>
 #include <QElapsedTimer>
 #include <QString>
+#include <span>
 #include <stop_token>
 #include <thread>
 #include <vector>
@@ -44,6 +45,7 @@ class BenchmarkDialog : public QDialog {
   QLabel* statusLabel() const { return status_; }
   QLabel* errorLabel() const { return error_; }
   QTableWidget* resultsTable() const { return table_; }
+  QChartView* chartView() const { return chartView_; }
 
   /// Checks the settings and starts the search; on bad settings shows one error and starts
   /// nothing. Returns whether a run started.
@@ -72,6 +74,7 @@ class BenchmarkDialog : public QDialog {
                     double medianStepMs, double fraction);
   void finishRun(std::vector<measure::CapacityResult> results, const QString& failure);
   void showResults();
+  void showChart(std::span<const measure::CapacityResult> results);
   void showError(const QString& message);
   void updateButtons();
   /// Cancels a run and waits for its thread (the dialog is closing).
@@ -95,6 +98,8 @@ class BenchmarkDialog : public QDialog {
   QString progressText_;                ///< the latest progress, without the elapsed time
   measure::CapacitySettings settings_;  ///< of the run shown or running
   std::vector<measure::CapacityResult> results_;
+  /// While a run goes: what it measured so far, one entry per backend begun.
+  std::vector<measure::CapacityResult> liveResults_;
   bool running_ = false;
   std::jthread worker_;  ///< last: destroyed (stopped and joined) before the widgets
 };

@@ -43,9 +43,12 @@ CompareReadout::CompareReadout(QWidget* parent)
                      "#compareReadout QLabel { color: #e8eaf0; font-size: 9pt; }"
                      "#compareReadout QLabel[role=\"caption\"] { color: #9aa0ae; font-size: 8pt; }"
                      "#compareReadout QLabel[role=\"baseline\"] { color: #9e9e9e; }"));
-  grid_->setContentsMargins(14, 4, 14, 4);
-  grid_->setHorizontalSpacing(22);
-  grid_->setVerticalSpacing(1);
+  // Tight enough that five columns fit beside the settings in a 1000 px window.
+  // Tight, so that five columns fit beside the settings in a 1000 px window and five runs'
+  // rows leave the box the height.
+  grid_->setContentsMargins(8, 2, 8, 2);
+  grid_->setHorizontalSpacing(14);
+  grid_->setVerticalSpacing(0);
 
   reference_->setProperty("role", "caption");
   reference_->setTextFormat(Qt::RichText);

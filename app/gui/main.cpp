@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "command_line.h"
+#include "dark_theme.h"
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
@@ -151,6 +152,7 @@ int main(int argc, char* argv[]) {
   qtMessageHandler = qInstallMessageHandler(pointToHeadlessWhenQtGivesUp);
   QApplication app(argc, argv);
   qInstallMessageHandler(qtMessageHandler);
+  applyDarkTheme(app);
   QApplication::setApplicationDisplayName(QStringLiteral("FooBall"));
   QApplication::setApplicationVersion(fromView(kVersion));
   // The installed icon theme's where there is one; the copy built into the program otherwise

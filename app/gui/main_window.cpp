@@ -3,10 +3,13 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QMessageBox>
+#include <QResizeEvent>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QShowEvent>
 #include <QStatusBar>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "ball_inspector.h"
 #include "charts/chart_panel.h"
@@ -30,10 +33,11 @@ constexpr int kStatusMessageMs = 8000;
 /// Changes of one setting closer together than this (ms) are one gesture: a slider's drag sends
 /// one every few ms, a user's separate changes are seconds apart.
 constexpr qint64 kGestureGapMs = 700;
-constexpr int kSidebarWidth = 330;        // px
+constexpr int kSidebarWidth = 300;        // px
 constexpr QSize kDefaultSize{1440, 900};  // px, before it is fitted to the screen
-/// The charts' first share of the window's height: the box stays the largest thing.
-constexpr double kChartsShareOfHeight = 0.38;
+/// The charts' first share of the window's height: at 16:9 the box then stays the largest
+/// thing on screen from 1000×650 to 3840×2160, in compare mode too (layout_test.cpp).
+constexpr double kChartsShareOfHeight = 0.25;
 
 }  // namespace
 
@@ -97,7 +101,8 @@ void MainWindow::createDocks() {
   sidebarScroll_->setWidget(sidebar_);
   sidebarScroll_->setWidgetResizable(true);
   sidebarScroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  sidebarScroll_->setMinimumWidth(sidebar_->sizeHint().width() + 24);
+  fitSidebarWidth();
+  sidebar_->installEventFilter(this);
   sidebarDock_ = new QDockWidget(tr("Settings"), this);
   sidebarDock_->setObjectName(QStringLiteral("settingsDock"));
   sidebarDock_->setWidget(sidebarScroll_);
@@ -108,8 +113,9 @@ void MainWindow::createDocks() {
   chartsDock_->setObjectName(QStringLiteral("chartsDock"));
   chartsDock_->setWidget(charts_);
   addDockWidget(Qt::BottomDockWidgetArea, chartsDock_);
-  // The settings column runs the full height; the charts sit under the view.
-  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+  // The charts run the full width under the box and the settings: a wide strip fits four charts
+  // side by side, and the settings column, which scrolls anyway, leaves the box the height.
+  setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
 }
 
 void MainWindow::connectRuns() {
@@ -149,6 +155,21 @@ void MainWindow::connectRuns() {
                   "identical; the charts keep their history")
                    .arg(time, 0, 'f', 2));
   });
+}
+
+void MainWindow::fitSidebarWidth() {
+  // As narrow as the sidebar's controls allow, so the box keeps the room at 1000 px wide; and
+  // never narrower, or the rightmost column (the counters', a run's remove button) is cut off.
+  // Its controls change with the runs, so this follows them (eventFilter).
+  sidebarScroll_->setMinimumWidth(sidebar_->minimumSizeHint().width() +
+                                  sidebarScroll_->verticalScrollBar()->sizeHint().width() +
+                                  2 * sidebarScroll_->frameWidth());
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  // The sidebar's rows change with the runs and their options, laid out in a posted event.
+  if (watched == sidebar_ && event->type() == QEvent::LayoutRequest) fitSidebarWidth();
+  return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::showRuns() {
@@ -286,6 +307,25 @@ void MainWindow::sizeDocks() {
       [this] {
         resizeDocks({chartsDock_}, {int(kChartsShareOfHeight * height())}, Qt::Vertical);
         resizeDocks({sidebarDock_}, {kSidebarWidth}, Qt::Horizontal);
+      },
+      Qt::QueuedConnection);
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+  QMainWindow::resizeEvent(event);
+  // The dock keeps its height in pixels when the window changes, so shrinking a tall window
+  // would leave the box a sliver above the charts: keep the charts' share of the height instead
+  // (the share the user dragged them to, or the first one).
+  const QSize old = event->oldSize();
+  if (!docksSized_ || !old.isValid() || old.height() == height() || chartsDock_->isHidden() ||
+      chartsDock_->isFloating()) {
+    return;
+  }
+  const double share = double(chartsDock_->height()) / double(old.height());
+  QMetaObject::invokeMethod(
+      this,
+      [this, share] {
+        resizeDocks({chartsDock_}, {int(std::lround(share * height()))}, Qt::Vertical);
       },
       Qt::QueuedConnection);
 }

@@ -67,6 +67,8 @@ class MainWindow : public QMainWindow {
   QDockWidget* chartsDock() const { return chartsDock_; }
   /// The preset the scene came from; empty for a scene file.
   const QString& presetName() const { return presetName_; }
+  /// The preset's or the scene file's name, as in the title.
+  const QString& sourceName() const { return sourceName_; }
 
   /// How errors reach the user: a message box by default; tests record them instead.
   using ErrorReporter = std::function<void(const QString& title, const QString& message)>;
@@ -109,9 +111,13 @@ class MainWindow : public QMainWindow {
  protected:
   void closeEvent(QCloseEvent* event) override;
   void showEvent(QShowEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void createDocks();
+  /// The settings dock's least width: its widest control row, beside the scroll bar.
+  void fitSidebarWidth();
   /// Gives the charts and the settings their first share of the window (queued: after layout).
   void sizeDocks();
   void connectRuns();

@@ -15,7 +15,11 @@ namespace fooball::gui {
 
 namespace {
 
-constexpr int kBoxMargin = 14;                 // px around each box
+constexpr int kBoxMargin = 8;                  // px around each box
+constexpr int kCaptionGap = 4;                 // px between captions, and around their rows
+constexpr int kPillPadding = 4;                // px around a caption's text
+constexpr int kSwatchWidth = 20;               // px: a run's colour before its name
+constexpr int kTemperatureBarWidth = 110;      // px: the speed scale's gradient
 constexpr QRgb kSurround = 0xff16171c;         // outside the box
 constexpr QRgb kWallColour = 0xff6b7385;       // walls that are on; dashed when off
 constexpr QRgb kVectorColour = 0xff9be564;     // velocity vectors
@@ -53,12 +57,6 @@ QColor toolColour(MouseMode mode) {
   return Qt::white;
 }
 
-/// Side by side: the tiles' columns and rows.
-struct TileGrid {
-  int columns = 1;
-  int rows = 1;
-};
-
 void drawPill(QPainter& painter, const QRectF& rect) {
   painter.setPen(QPen(QColor(255, 255, 255, 40), 1.0));
   painter.setBrush(QColor(12, 13, 18, 205));
@@ -78,7 +76,8 @@ SimulationView::SimulationView(const RunController& runs, QWidget* parent)
   setToolTip(
       tr("Left button: the mouse tool (attract, repel, grab, slingshot).\n"
          "Right button: place a permanent attractor.\n"
-         "Paused: click a ball to select it and edit it in the inspector."));
+         "Paused: click a ball to select it and edit it in the inspector.\n"
+         "Compare mode: run 0 is filled, every other run an outline in its colour."));
 }
 
 void SimulationView::setTemperatureColouring(bool on) {
@@ -106,46 +105,88 @@ void SimulationView::setCompareLayout(CompareLayout layout) {
   update();
 }
 
-TileGrid tileGrid(int tiles, QSize area, const Box& box) {
-  // The grid whose tiles show the box largest, each keeping the box's aspect ratio. On a tie
-  // (a 16:9 box in a 16:9 view fits 1×2 and 2×1 alike) the squarer grid wins: 2 runs 1×2,
-  // 3–4 runs 2×2, 5–6 runs 2×3.
-  TileGrid best;
-  double bestScale = -1.0;
-  const int preferred = static_cast<int>(std::ceil(std::sqrt(double(tiles))));
-  for (int offset = 0; offset < tiles; ++offset) {
-    for (const int columns : {preferred + offset, preferred - offset}) {
-      if (columns < 1 || columns > tiles) continue;
-      const int rows = (tiles + columns - 1) / columns;
-      const double scale = std::min((area.width() / double(columns) - 2 * kBoxMargin) / box.width,
-                                    (area.height() / double(rows) - 2 * kBoxMargin) / box.height);
-      if (scale > bestScale * (1.0 + 1e-9)) {
-        bestScale = scale;
-        best = {columns, rows};
-      }
-    }
-  }
-  return best;
-}
-
-std::vector<SimulationView::Panel> SimulationView::panels() const {
-  const Box& box = runs_.run(0).box();
+SimulationView::Layout SimulationView::layout() const {
+  // The captions go in rows above the boxes, never on them: a legend or a hint on top of the
+  // balls hides what they show. The Paused hint's room is kept while running too, so pausing
+  // does not move the box.
+  const QFontMetrics metrics(font());
+  const int pillHeight = metrics.height() + 2 * kPillPadding;
+  const auto pillSize = [&](const QString& text, int extra) {
+    // One pixel more than the text's advance: eliding rounds the width down.
+    return QSize(metrics.horizontalAdvance(text) + 1 + 2 * kPillPadding + extra, pillHeight);
+  };
   const int runs = runs_.runCount();
-  if (runs == 1 || compareLayout_ == CompareLayout::Overlay) {
-    return {{0, runs > 1, ViewTransform(box, rect(), kBoxMargin)}};
+  const bool overlay = runs == 1 || compareLayout_ == CompareLayout::Overlay;
+  Layout result;
+  std::vector<QSize> leading;
+  if (runs > 1 && overlay) {
+    // The swatch says filled (run 0) or outlined (the others), as the balls are drawn.
+    for (int runIndex = 0; runIndex < runs; ++runIndex)
+      result.captions.push_back({Caption::Kind::RunEntry, runIndex, runs_.label(runIndex), {}});
+    for (const Caption& caption : result.captions)
+      leading.push_back(pillSize(caption.text, kSwatchWidth));
   }
-  const TileGrid grid = tileGrid(runs, size(), box);
-  std::vector<Panel> tiles;
+  std::vector<Caption> trailingCaptions;
+  if (temperature_) {
+    trailingCaptions.push_back(
+        {Caption::Kind::Temperature, 0, tr("speed 0 … %1 m/s").arg(topSpeed_, 0, 'g', 3), {}});
+  }
+  trailingCaptions.push_back({Caption::Kind::Paused, 0, pausedText(), {}});
+  std::vector<QSize> trailing;
+  for (const Caption& caption : trailingCaptions) {
+    const int extra = caption.kind == Caption::Kind::Temperature ? kTemperatureBarWidth : 0;
+    trailing.push_back(pillSize(caption.text, extra));
+  }
+  const CaptionRows rows = layoutCaptionRows(rect(), leading, trailing, kCaptionGap);
+  for (std::size_t i = 0; i < leading.size(); ++i)
+    result.captions[i].rect = rows.leading[i];
+  for (std::size_t i = 0; i < trailingCaptions.size(); ++i) {
+    trailingCaptions[i].rect = rows.trailing[i];
+    result.captions.push_back(trailingCaptions[i]);
+  }
+
+  // Below the rows; the boxes' own margin is the gap under the last one.
+  const QRect area = rect().adjusted(0, std::max(0, rows.height - kBoxMargin + kCaptionGap), 0, 0);
+  const Box& box = runs_.run(0).box();
+  if (overlay) {
+    result.panels.push_back({0, runs > 1, ViewTransform(box, area, kBoxMargin)});
+    return result;
+  }
+  // Side by side: each tile's run named on a line above its box.
+  const TileGrid grid = tileGrid(runs, area.size() - QSize(0, pillHeight), box, kBoxMargin);
   for (int index = 0; index < runs; ++index) {
     const int column = index % grid.columns;
     const int row = index / grid.columns;
-    const int left = width() * column / grid.columns;
-    const int top = height() * row / grid.rows;
-    const QRect cell(left, top, width() * (column + 1) / grid.columns - left,
-                     height() * (row + 1) / grid.rows - top);
-    tiles.push_back({index, false, ViewTransform(box, cell, kBoxMargin)});
+    const int left = area.left() + area.width() * column / grid.columns;
+    const int top = area.top() + area.height() * row / grid.rows;
+    const QRect cell(left, top, area.left() + area.width() * (column + 1) / grid.columns - left,
+                     area.top() + area.height() * (row + 1) / grid.rows - top);
+    const ViewTransform transform(box, cell.adjusted(0, pillHeight, 0, 0), kBoxMargin);
+    result.panels.push_back({index, false, transform});
+    const QRect boxRect = transform.boxRect();
+    const QSize label = pillSize(runs_.label(index), kSwatchWidth);
+    result.captions.push_back({Caption::Kind::TileLabel, index, runs_.label(index),
+                               QRect(boxRect.left(), boxRect.top() - kCaptionGap - pillHeight,
+                                     std::min(label.width(), boxRect.width()), pillHeight)});
   }
-  return tiles;
+  return result;
+}
+
+std::vector<SimulationView::Panel> SimulationView::panels() const {
+  return layout().panels;
+}
+
+std::vector<SimulationView::Caption> SimulationView::captions() const {
+  std::vector<Caption> shown = layout().captions;
+  if (!runs_.paused()) {
+    std::erase_if(shown,
+                  [](const Caption& caption) { return caption.kind == Caption::Kind::Paused; });
+  }
+  return shown;
+}
+
+QString SimulationView::pausedText() const {
+  return tr("Paused: click a ball to select it, “.” steps");
 }
 
 const SimulationView::Panel* SimulationView::panelAt(QPointF position,
@@ -224,12 +265,9 @@ void SimulationView::paintEvent(QPaintEvent*) {
     if (centreOfMass_) paintCentreOfMass(painter, panel);
     paintSelection(painter, panel);
     painter.restore();
-    painter.setRenderHint(QPainter::Antialiasing, true);
-    paintRunLabels(painter, panel);
   }
-  const QRect lastBox = all.back().transform.boxRect();
-  if (temperature_) paintTemperatureLegend(painter, lastBox);
-  if (runs_.paused()) paintPausedBadge(painter, all.front().transform.boxRect().united(lastBox));
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  paintCaptions(painter, captions());
 }
 
 void SimulationView::paintBalls(QPainter& painter, const Panel& panel, std::size_t panelIndex) {
@@ -417,76 +455,49 @@ void SimulationView::paintSelection(QPainter& painter, const Panel& panel) const
     ring(runs_.run(runIndex), ChartPanel::runColour(runIndex));
 }
 
-void SimulationView::paintRunLabels(QPainter& painter, const Panel& panel) const {
-  if (!runs_.comparing()) return;
-  struct Entry {
-    int runIndex;
-    QString text;
-    bool outline;
-  };
-  std::vector<Entry> entries;
-  if (panel.overlay) {
-    entries.push_back({0, tr("%1 — filled").arg(runs_.label(0)), false});
-    for (int runIndex = 1; runIndex < runs_.runCount(); ++runIndex)
-      entries.push_back({runIndex, tr("%1 — outlines").arg(runs_.label(runIndex)), true});
-  } else {
-    entries.push_back({panel.runIndex, runs_.label(panel.runIndex), false});
-  }
+void SimulationView::paintCaptions(QPainter& painter, const std::vector<Caption>& captions) const {
   const QFontMetrics metrics(font());
-  int textWidth = 0;
-  for (const Entry& entry : entries)
-    textWidth = std::max(textWidth, metrics.horizontalAdvance(entry.text));
-  const double lineHeight = metrics.height() + 4.0;
-  const QRectF pill(panel.transform.boxRect().left() + 10.0, panel.transform.boxRect().top() + 10.0,
-                    textWidth + 40.0, lineHeight * double(entries.size()) + 10.0);
-  drawPill(painter, pill);
-  double y = pill.top() + 5.0;
-  for (const Entry& entry : entries) {
-    const QColor colour = ChartPanel::runColour(entry.runIndex);
-    const QPointF swatch(pill.left() + 15.0, y + lineHeight / 2.0);
-    if (entry.outline) {
-      painter.setPen(QPen(colour, 2.0));
-      painter.setBrush(Qt::NoBrush);
-    } else {
-      painter.setPen(Qt::NoPen);
-      painter.setBrush(colour);
+  for (const Caption& caption : captions) {
+    const QRectF pill(caption.rect);
+    drawPill(painter, pill);
+    const QRectF inner = pill.adjusted(kPillPadding, 0, -kPillPadding, 0);
+    switch (caption.kind) {
+      case Caption::Kind::RunEntry:
+      case Caption::Kind::TileLabel: {
+        const QColor colour = ChartPanel::runColour(caption.runIndex);
+        const QPointF swatch(inner.left() + kSwatchWidth / 2.0 - 3.0, pill.center().y());
+        const bool outline = caption.kind == Caption::Kind::RunEntry && caption.runIndex > 0;
+        painter.setPen(outline ? QPen(colour, 2.0) : QPen(Qt::NoPen));
+        painter.setBrush(outline ? QBrush(Qt::NoBrush) : QBrush(colour));
+        painter.drawEllipse(swatch, 5.5, 5.5);
+        painter.setPen(QColor(0xe8, 0xea, 0xf0));
+        const QRectF text = inner.adjusted(kSwatchWidth, 0, 0, 0);
+        painter.drawText(text, Qt::AlignVCenter | Qt::AlignLeft,
+                         metrics.elidedText(caption.text, Qt::ElideMiddle, int(text.width())));
+        break;
+      }
+      case Caption::Kind::Temperature: {
+        // "speed 0 [gradient] 20 m/s": the ends of the colour scale, in one line.
+        const QString low = tr("speed 0");
+        const QString high = tr("%1 m/s").arg(topSpeed_, 0, 'g', 3);
+        painter.setPen(QColor(0xe8, 0xea, 0xf0));
+        painter.drawText(inner, Qt::AlignVCenter | Qt::AlignLeft, low);
+        painter.drawText(inner, Qt::AlignVCenter | Qt::AlignRight, high);
+        const double barLeft = inner.left() + metrics.horizontalAdvance(low) + 6.0;
+        const double barRight = inner.right() - metrics.horizontalAdvance(high) - 6.0;
+        const QRectF bar(barLeft, pill.center().y() - 4.0, std::max(barRight - barLeft, 1.0), 8.0);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(palette_.gradient(bar.topLeft(), bar.topRight()));
+        painter.drawRoundedRect(bar, 3.0, 3.0);
+        break;
+      }
+      case Caption::Kind::Paused:
+        painter.setPen(QColor(0xff, 0xd1, 0x66));
+        painter.drawText(pill, Qt::AlignCenter,
+                         metrics.elidedText(caption.text, Qt::ElideRight, int(inner.width())));
+        break;
     }
-    painter.drawEllipse(swatch, 5.5, 5.5);
-    painter.setPen(QColor(0xe8, 0xea, 0xf0));
-    painter.drawText(QRectF(pill.left() + 28.0, y, textWidth + 8.0, lineHeight),
-                     Qt::AlignVCenter | Qt::AlignLeft, entry.text);
-    y += lineHeight;
   }
-}
-
-void SimulationView::paintTemperatureLegend(QPainter& painter, const QRect& box) const {
-  const QFontMetrics metrics(font());
-  const QString top = tr("%1 m/s").arg(topSpeed_, 0, 'g', 3);
-  const double barWidth = 150.0;
-  const QRectF pill(box.left() + 10.0, box.bottom() - 10.0 - (2.0 * metrics.height() + 22.0),
-                    barWidth + 24.0, 2.0 * metrics.height() + 22.0);
-  drawPill(painter, pill);
-  painter.setPen(QColor(0xe8, 0xea, 0xf0));
-  painter.drawText(QPointF(pill.left() + 12.0, pill.top() + 6.0 + metrics.ascent()), tr("speed"));
-  const QRectF bar(pill.left() + 12.0, pill.top() + 10.0 + metrics.height(), barWidth, 8.0);
-  painter.setPen(Qt::NoPen);
-  painter.setBrush(palette_.gradient(bar.topLeft(), bar.topRight()));
-  painter.drawRoundedRect(bar, 3.0, 3.0);
-  painter.setPen(QColor(0xb8, 0xbc, 0xc8));
-  const double labelsY = bar.bottom() + 3.0 + metrics.ascent();
-  painter.drawText(QPointF(bar.left(), labelsY), QStringLiteral("0"));
-  painter.drawText(QPointF(bar.right() - metrics.horizontalAdvance(top), labelsY), top);
-}
-
-void SimulationView::paintPausedBadge(QPainter& painter, const QRect& box) const {
-  const QString text = tr("Paused — click a ball to select it, “.” steps once");
-  const QFontMetrics metrics(font());
-  const double width = metrics.horizontalAdvance(text) + 28.0;
-  const QRectF pill(box.center().x() - width / 2.0, box.top() + 10.0, width,
-                    metrics.height() + 10.0);
-  drawPill(painter, pill);
-  painter.setPen(QColor(0xff, 0xd1, 0x66));
-  painter.drawText(pill, Qt::AlignCenter, text);
 }
 
 void SimulationView::mousePressEvent(QMouseEvent* event) {

@@ -9,6 +9,7 @@
 #include "disc_rasterizer.h"
 #include "fooball/vec2.h"
 #include "temperature_palette.h"
+#include "view_layout.h"
 #include "view_transform.h"
 
 namespace fooball {
@@ -39,6 +40,23 @@ class SimulationView : public QWidget {
 
   /// The mapping of the box that shows run `runIndex` (side by side: each run has its own).
   ViewTransform transformForRun(int runIndex) const;
+
+  /// A legend entry or a hint, drawn in the rows above the boxes (or, side by side, on the line
+  /// above a tile's box): never on the balls.
+  struct Caption {
+    enum class Kind {
+      RunEntry,     ///< overlay: a run's colour, filled (run 0) or outlined
+      TileLabel,    ///< side by side: the run a box shows
+      Temperature,  ///< the speed colour scale
+      Paused,       ///< what a click does while paused
+    };
+    Kind kind;
+    int runIndex = 0;
+    QString text;
+    QRect rect;  ///< widget px
+  };
+  /// The captions drawn now (the Paused hint only while paused).
+  std::vector<Caption> captions() const;
 
   bool temperatureColouring() const { return temperature_; }
   bool tethers() const { return tethers_; }
@@ -77,7 +95,13 @@ class SimulationView : public QWidget {
     bool overlay;  ///< the other runs are drawn as outlines on top
     ViewTransform transform;
   };
+  struct Layout {
+    std::vector<Panel> panels;
+    std::vector<Caption> captions;  ///< the Paused hint's included: its room is always kept
+  };
+  Layout layout() const;
   std::vector<Panel> panels() const;
+  QString pausedText() const;
   const Panel* panelAt(QPointF position, const std::vector<Panel>& panels) const;
   Vec2 toMetres(QPointF position) const;
   std::optional<std::size_t> ballAt(QPointF position) const;
@@ -89,9 +113,7 @@ class SimulationView : public QWidget {
   void paintTethers(QPainter& painter, const Panel& panel, const Simulation& run);
   void paintCentreOfMass(QPainter& painter, const Panel& panel) const;
   void paintSelection(QPainter& painter, const Panel& panel) const;
-  void paintRunLabels(QPainter& painter, const Panel& panel) const;
-  void paintTemperatureLegend(QPainter& painter, const QRect& box) const;
-  void paintPausedBadge(QPainter& painter, const QRect& box) const;
+  void paintCaptions(QPainter& painter, const std::vector<Caption>& captions) const;
 
   const RunController& runs_;
   bool temperature_ = false;

@@ -180,12 +180,28 @@ void WindowActions::saveSceneDialog() {
 void WindowActions::exportChartsPng() {
   const QString path = QFileDialog::getSaveFileName(&window_, tr("Export charts as PNG"), QString(),
                                                     tr("PNG images (*.png)"));
-  if (path.isEmpty()) return;
-  if (window_.charts()->exportPng(path)) {
-    window_.showStatus(tr("Charts saved to %1").arg(path));
-  } else {
+  if (!path.isEmpty()) exportChartsPngTo(path);
+}
+
+bool WindowActions::exportChartsPngTo(const QString& path) {
+  if (!window_.charts()->exportPng(path, chartCaption())) {
     window_.reportError(tr("Could not export the charts"), tr("Could not write %1").arg(path));
+    return false;
   }
+  window_.showStatus(tr("Charts saved to %1").arg(path));
+  return true;
+}
+
+QString WindowActions::chartCaption() const {
+  const RunController& runs = window_.runs();
+  QStringList labels = runs.labels();
+  if (labels.size() > 1) labels.front() += tr(" (reference)");
+  if (runs.group().hasBaseline()) labels.append(tr("chaos baseline"));
+  return tr("FooBall — %1, %2 balls, t = %3 s — %4: %5")
+      .arg(window_.sourceName())
+      .arg(runs.group().ballCount())
+      .arg(runs.group().time(), 0, 'f', 2)
+      .arg(labels.size() > 1 ? tr("runs") : tr("run"), labels.join(QStringLiteral(", ")));
 }
 
 void WindowActions::exportChartsCsv() {

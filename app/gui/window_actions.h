@@ -40,6 +40,11 @@ class WindowActions : public QObject {
   void closeBenchmark();
   /// Deletes the dialog, which stops and joins its thread (before the window's widgets go).
   void destroyBenchmark();
+  /// File → Export charts as PNG to `path`, under a caption naming the scene and the runs; says
+  /// how it went in the status bar or an error.
+  bool exportChartsPngTo(const QString& path);
+  /// The caption: "FooBall — gas, 300 balls, t = 6.00 s — runs: elastic (reference), exact".
+  QString chartCaption() const;
 
  private:
   void createActions();

@@ -1,16 +1,21 @@
 #include "benchmark_dialog.h"
 
+#include <QChart>
+#include <QChartView>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QHeaderView>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLineSeries>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <functional>
 
 #include "gui_fixture.h"
@@ -54,6 +59,76 @@ class Benchmark : public GuiTest {
     dialog->budgetEdit()->setText(budgetMs);
   }
 };
+
+/// Whether every column header's text fits its section as drawn (the header once read
+/// "nedian step (ms": centred and cut at both ends).
+void expectHeadersFit(const QTableWidget& table, const std::string& when) {
+  const QHeaderView* header = table.horizontalHeader();
+  const QFontMetrics metrics(header->font());
+  for (int column = 0; column < table.columnCount(); ++column) {
+    const QString text = table.horizontalHeaderItem(column)->text();
+    // The style's margins on both sides of the text, as a section's size hint counts them.
+    const int needed = metrics.horizontalAdvance(text) + 8;
+    EXPECT_GE(header->sectionSize(column), needed) << when << ": " << text.toStdString();
+  }
+  int total = 0;
+  for (int column = 0; column < table.columnCount(); ++column)
+    total += header->sectionSize(column);
+  EXPECT_LE(total, header->width() + 1) << when << ": the last column runs out of the table";
+}
+
+TEST_F(Benchmark, ColumnHeadersFitBeforeAndAfterARun) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  QCoreApplication::processEvents();
+  expectHeadersFit(*dialog->resultsTable(), "before a run");
+  choose(dialog, QStringLiteral("elastic"), QStringLiteral("0.05"));
+  ASSERT_TRUE(dialog->start());
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 20.0 * slowdown()));
+  QCoreApplication::processEvents();
+  expectHeadersFit(*dialog->resultsTable(), "after a run");
+}
+
+TEST_F(Benchmark, ChartShowsEachCountAsItIsMeasured) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  // Nothing measured yet: no empty 1–10 axes, a title that says what will come.
+  for (const QAbstractAxis* axis : dialog->chartView()->chart()->axes())
+    EXPECT_FALSE(axis->isVisible());
+  choose(dialog, QStringLiteral("elastic"), QStringLiteral("1000"));
+  ASSERT_TRUE(dialog->start());
+  const auto measuredPoints = [&] {
+    int points = 0;
+    for (const QAbstractSeries* series : dialog->chartView()->chart()->series()) {
+      if (const auto* line = qobject_cast<const QLineSeries*>(series);
+          line != nullptr && line->name().startsWith(QStringLiteral("elastic")))
+        points += line->count();
+    }
+    return points;
+  };
+  ASSERT_TRUE(waitUntil([&] { return measuredPoints() >= 1; }, 20.0 * slowdown()))
+      << "the chart shows nothing while the search runs";
+  EXPECT_TRUE(dialog->running());
+  for (const QAbstractAxis* axis : dialog->chartView()->chart()->axes())
+    EXPECT_TRUE(axis->isVisible());
+  dialog->cancel();
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 10.0 * slowdown()));
+}
+
+TEST_F(Benchmark, CancelledRunAddsNoResult) {
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  // One backend with a budget it never reaches: the search is still going when cancelled.
+  choose(dialog, QStringLiteral("elastic"), QStringLiteral("1000"));
+  ASSERT_TRUE(dialog->start());
+  ASSERT_TRUE(waitUntil([&] { return dialog->progressBar()->value() > 0; }, 20.0 * slowdown()));
+  dialog->cancel();
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 10.0 * slowdown()));
+  EXPECT_TRUE(dialog->results().empty());
+  EXPECT_EQ(dialog->resultsTable()->rowCount(), 0);
+  for (const QAbstractAxis* axis : dialog->chartView()->chart()->axes())
+    EXPECT_FALSE(axis->isVisible()) << "no result: no empty axes either";
+}
 
 TEST_F(Benchmark, ToolsMenuOpensTheDialog) {
   open(stillBalls());

@@ -9,7 +9,10 @@
 #include <QImage>
 #include <QLogValueAxis>
 #include <QRegularExpression>
+#include <QSplitterHandle>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -577,7 +580,9 @@ TEST_F(ChartPanelTest, PointsStayBoundedForLongRuns) {
     panel.refresh();
     for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
       for (int run = chart == ChartPanel::kDivergenceChart ? 1 : 0; run < 2; ++run) {
-        EXPECT_GT(panel.displayedPointCount(chart, run), kMaxPoints / 4);
+        // Two points per pixel column of a plot a few hundred pixels wide (the panel's grid
+        // has two columns), however many samples.
+        EXPECT_GT(panel.displayedPointCount(chart, run), TimeChart::kMinPointsPerCurve);
         EXPECT_LE(panel.displayedPointCount(chart, run), kMaxPoints);
       }
     }
@@ -658,9 +663,10 @@ TEST_F(ChartPanelTest, TogglesHideQuantitiesAndEmptyCharts) {
 }
 
 TEST_F(ChartPanelTest, PlotAreasLineUpSoTheirTimeAxesMatch) {
-  // The value labels differ in width (N·s, J, 1e-12) and only the bottom chart has time labels,
-  // whose last one overhangs the plot on the right: every plot still starts and ends at the
-  // same x, so one time reads the same in every chart.
+  // The value labels differ in width (N·s, J, 1e-12) and only a column's bottom chart has time
+  // labels, whose last one overhangs the plot on the right: the plots of a column of the grid
+  // still start and end at the same x, so one time reads the same in each; and every plot is
+  // as wide as the others, so the columns read alike.
   panel.reset({"elastic", "exact"});
   addRun(panel, 0, 600, 1.0 / 60.0);
   addRun(panel, 1, 600, 1.0 / 60.0);
@@ -677,11 +683,20 @@ TEST_F(ChartPanelTest, PlotAreasLineUpSoTheirTimeAxesMatch) {
                      chart->mapTo(chart->window(), QPoint{}).x() + plot.right()};
   };
   const auto [left, right] = plotEdgesOf(charts.front());
+  int columns = 0;
   for (const TimeChart* chart : charts) {
+    for (const TimeChart* other : charts) {
+      if (other->x() != chart->x()) continue;  // another column
+      EXPECT_NEAR(plotEdgesOf(other).first, plotEdgesOf(chart).first, 1.0)
+          << chart->chart()->title().toStdString();
+      EXPECT_NEAR(plotEdgesOf(other).second, plotEdgesOf(chart).second, 1.0)
+          << chart->chart()->title().toStdString();
+    }
     const auto [chartLeft, chartRight] = plotEdgesOf(chart);
-    EXPECT_NEAR(chartLeft, left, 1.0) << chart->chart()->title().toStdString();
-    EXPECT_NEAR(chartRight, right, 1.0) << chart->chart()->title().toStdString();
+    EXPECT_NEAR(chartRight - chartLeft, right - left, 1.0) << chart->chart()->title().toStdString();
+    columns += chart->x() == charts.front()->x() ? 0 : 1;
   }
+  EXPECT_GT(columns, 0) << "a 1400 × 1000 panel has two columns of charts";
 }
 
 TEST_F(ChartPanelTest, CsvHoldsEveryStoredSampleAndParsesBack) {
@@ -827,6 +842,73 @@ TEST(HiddenChartPanel, PngDrawsTheChartsAtThePanelsSize) {
   EXPECT_LT(image.height(), 1800);
   // The total energy curve (near white) is drawn.
   EXPECT_TRUE(containsColour(image, QColor(0xf5, 0xf5, 0xf5), 10));
+}
+
+TEST_F(FourRunsAndBaseline, PngHasItsCaptionAboveTheChartsAndNoSplitterGrips) {
+  QTemporaryDir directory;
+  ASSERT_TRUE(directory.isValid());
+  const QString plainPath = directory.filePath("plain.png");
+  const QString captionedPath = directory.filePath("captioned.png");
+  const QString caption = "FooBall — gas, 300 balls, t = 6.00 s — runs: elastic (reference), exact";
+  ASSERT_TRUE(panel.exportPng(plainPath));
+  ASSERT_TRUE(panel.exportPng(captionedPath, caption));
+  QImage plain;
+  QImage captioned;
+  ASSERT_TRUE(plain.load(plainPath));
+  ASSERT_TRUE(captioned.load(captionedPath));
+  EXPECT_EQ(captioned.text("Description"), caption);
+  EXPECT_EQ(captioned.width(), plain.width());
+  const int captionHeight = captioned.height() - plain.height();
+  EXPECT_GT(captionHeight, 2 * 12) << "a line of text at twice the pixels";
+  EXPECT_LT(captionHeight, 2 * 60);
+  // Light text on the dark strip above the charts.
+  int light = 0;
+  for (int y = 0; y < captionHeight; ++y) {
+    for (int x = 0; x < captioned.width(); ++x)
+      light += QColor(captioned.pixel(x, y)).lightnessF() > 0.7 ? 1 : 0;
+  }
+  EXPECT_GT(light, 200);
+  // The charts below the caption are the plain export's, pixel for pixel.
+  EXPECT_EQ(captioned.copy(0, captionHeight, plain.width(), plain.height())
+                .convertToFormat(QImage::Format_RGB32),
+            plain.convertToFormat(QImage::Format_RGB32));
+  // No splitter in the panel, so no grips in any image of it.
+  EXPECT_TRUE(panel.findChildren<QSplitterHandle*>().isEmpty());
+}
+
+TEST_F(ChartPanelTest, EveryToggleShowsACheckBoxOnAndOff) {
+  // Off, a text-only tool button reads as a plain label: each switch carries a box that is
+  // ticked when on and empty when off.
+  const QToolBar* toolBar = panel.findChild<QToolBar*>();
+  ASSERT_NE(toolBar, nullptr);
+  EXPECT_EQ(toolBar->toolButtonStyle(), Qt::ToolButtonTextBesideIcon);
+  int toggles = 0;
+  for (QAction* action : toolBar->actions()) {
+    if (!action->isCheckable()) continue;
+    ++toggles;
+    const QIcon icon = action->icon();
+    ASSERT_FALSE(icon.isNull()) << action->text().toStdString();
+    const QImage on = icon.pixmap(QSize(16, 16), QIcon::Normal, QIcon::On).toImage();
+    const QImage off = icon.pixmap(QSize(16, 16), QIcon::Normal, QIcon::Off).toImage();
+    EXPECT_NE(on, off) << action->text().toStdString();
+    // The empty box is drawn, not blank.
+    int drawn = 0;
+    for (int y = 0; y < off.height(); ++y) {
+      for (int x = 0; x < off.width(); ++x)
+        drawn += qAlpha(off.pixel(x, y)) > 128 ? 1 : 0;
+    }
+    EXPECT_GT(drawn, 20) << action->text().toStdString();
+  }
+  EXPECT_EQ(toggles, 10);
+}
+
+TEST(ChartGrid, ColumnsFollowTheShapeOfThePanel) {
+  EXPECT_EQ(chartColumns(4, QSize(1110, 220)), 4) << "a wide strip under the box";
+  EXPECT_EQ(chartColumns(3, QSize(1110, 220)), 3);
+  EXPECT_EQ(chartColumns(4, QSize(1100, 600)), 2);
+  EXPECT_EQ(chartColumns(4, QSize(400, 900)), 1) << "a tall column beside it";
+  EXPECT_EQ(chartColumns(4, QSize(700, 200)), 2) << "none narrower than 240 px";
+  EXPECT_EQ(chartColumns(1, QSize(2000, 300)), 1);
 }
 
 TEST_F(ChartPanelTest, PngToAnUnwritablePathFails) {

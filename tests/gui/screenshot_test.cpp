@@ -97,3 +97,37 @@ TEST(FooballBinary, VersionPrintsTheProjectVersionWithoutADisplay) {
 }
 
 }  // namespace
+
+TEST(FooballBinary, ScreenshotIsDarkThroughoutWithReadableText) {
+  // The app sets its dark theme at startup: the menu bar, the sidebar and the status bar are as
+  // dark as the box, not the platform's light grey, and the menu bar's text stands out.
+  QTemporaryDir directory;
+  const QString path = directory.filePath(QStringLiteral("dark.png"));
+  const Outcome outcome =
+      runFooball({QStringLiteral("--size"), QStringLiteral("1000x650"), QStringLiteral("--frames"),
+                  QStringLiteral("1"), QStringLiteral("--screenshot"), path},
+                 {});
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.err.toStdString();
+  const QImage image = QImage(path).convertToFormat(QImage::Format_RGB32);
+  ASSERT_EQ(image.size(), QSize(1000, 650));
+  const auto meanLightness = [&](const QRect& region) {
+    double sum = 0.0;
+    for (int y = region.top(); y <= region.bottom(); ++y) {
+      for (int x = region.left(); x <= region.right(); ++x)
+        sum += QColor(image.pixel(x, y)).lightnessF();
+    }
+    return sum / (region.width() * region.height());
+  };
+  const QRect menuBar(0, 0, 1000, 20);
+  const QRect sidebar(740, 40, 250, 560);
+  const QRect statusBar(0, 632, 1000, 18);
+  for (const QRect& region : {menuBar, sidebar, statusBar})
+    EXPECT_LT(meanLightness(region), 0.3) << region.x() << "," << region.y();
+  // Some pixels of the menu bar are text far lighter than its background.
+  int light = 0;
+  for (int x = 0; x < 300; ++x) {
+    for (int y = 2; y < 18; ++y)
+      light += QColor(image.pixel(x, y)).lightnessF() > 0.75 ? 1 : 0;
+  }
+  EXPECT_GT(light, 50);
+}

@@ -4,12 +4,13 @@
 #include <QChart>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
+#include <QGridLayout>
 #include <QImage>
 #include <QLabel>
+#include <QPainter>
 #include <QPalette>
 #include <QScrollArea>
 #include <QSignalBlocker>
-#include <QSplitter>
 #include <QTextDocument>
 #include <QTimer>
 #include <QToolBar>
@@ -23,6 +24,7 @@
 #include "chart_csv.h"
 #include "chart_style.h"
 #include "time_chart.h"
+#include "toggle_icon.h"
 
 namespace fooball::gui {
 namespace {
@@ -33,8 +35,36 @@ constexpr int kRefreshIntervalMs = 100;
 constexpr double kDefaultWindowSeconds = 20.0;
 /// An exported PNG has twice the on-screen pixels, sharp enough for a page or a README.
 constexpr qreal kExportPixelRatio = 2.0;
+/// px between charts in the grid.
+constexpr int kChartSpacing = 2;
+/// The shape a chart reads best in (width : height) and the narrowest it may get in a row of
+/// several: below that its tick labels crowd out the curves.
+constexpr double kChartAspect = 2.4;
+constexpr int kMinChartWidth = 240;  // px
+constexpr int kCaptionPadding = 8;   // px around an exported image's caption
 
 }  // namespace
+
+int chartColumns(int charts, QSize area) {
+  // The columns that give each chart the largest plot of its preferred shape; a tie goes to
+  // fewer columns (wider charts).
+  int best = 1;
+  double bestHeight = -1.0;
+  for (int columns = 1; columns <= std::max(charts, 1); ++columns) {
+    const int rows = (charts + columns - 1) / columns;
+    const double cellWidth = double(area.width()) / columns;
+    if (columns > 1 && cellWidth < kMinChartWidth) break;
+    const double cellHeight = double(area.height()) / std::max(rows, 1);
+    const double height = std::min(cellWidth / kChartAspect, cellHeight);
+    if (height > bestHeight + 0.5) {
+      bestHeight = height;
+      best = columns;
+    }
+  }
+  return best;
+}
+
+namespace {}  // namespace
 
 ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   const std::deque<ChartMarker>* markers = &data_.markers();
@@ -56,19 +86,18 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
                                             TimeChart::ValueAxisKind::Logarithmic);
   charts_[kDivergenceChart]->setValueAxisTitle(tr("RMS Δposition"), tr("m"));
 
-  auto* splitter = new QSplitter(Qt::Vertical, this);
-  splitter_ = splitter;
-  splitter->setChildrenCollapsible(false);
-  splitter->setHandleWidth(3);
-  // The handles show the splitter's background: the charts' own, whatever the window's palette.
-  QPalette chartPalette = splitter->palette();
-  chartPalette.setColor(QPalette::Window, chart_colours::kBackground);
-  splitter->setPalette(chartPalette);
-  splitter->setAutoFillBackground(true);
+  // The charts share the panel in a grid (arrangeCharts) rather than a splitter: a wide, short
+  // dock under the box fits them side by side, a tall one on top of each other.
+  chartGrid_ = new QWidget(this);
+  gridLayout_ = new QGridLayout(chartGrid_);
+  gridLayout_->setContentsMargins(0, 0, 0, 0);
+  gridLayout_->setSpacing(kChartSpacing);
   for (TimeChart* chart : charts_) {
-    splitter->addWidget(chart);
+    chart->setParent(chartGrid_);
     connect(chart->chart(), &QChart::plotAreaChanged, this, &ChartPanel::alignPlotAreas);
   }
+  QPalette chartPalette = palette();
+  chartPalette.setColor(QPalette::Window, chart_colours::kBackground);
 
   // The run legend: one entry per run in its colour, wrapping onto more lines when the panel is
   // narrow. A chart's own legend is one row that Qt elides to "…" when eight runs do not fit.
@@ -91,7 +120,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   chartLayout->setContentsMargins(0, 0, 0, 0);
   chartLayout->setSpacing(0);
   chartLayout->addWidget(runLegend_);
-  chartLayout->addWidget(splitter, 1);
+  chartLayout->addWidget(chartGrid_, 1);
 
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -99,12 +128,13 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(createToolBar());
   // The charts scroll rather than push the window taller than the screen: four charts with
   // their titles and axes need more height than a 1000×650 window has to spare.
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(chartArea_);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
-  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  layout->addWidget(scroll, 1);
+  scroll_ = new QScrollArea;
+  scroll_->setWidget(chartArea_);
+  scroll_->setWidgetResizable(true);
+  scroll_->setFrameShape(QFrame::NoFrame);
+  scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll_->viewport()->installEventFilter(this);
+  layout->addWidget(scroll_, 1);
 
   refreshTimer_ = new QTimer(this);
   refreshTimer_->setInterval(kRefreshIntervalMs);
@@ -123,11 +153,15 @@ ChartPanel::~ChartPanel() {
 
 QToolBar* ChartPanel::createToolBar() {
   auto* toolBar = new QToolBar(this);
-  toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+  // Every action here is a switch: a check box beside its name says which are on.
+  toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  toolBar->setIconSize(QSize(16, 16));
+  const QIcon toggle = toggleIcon();
 
   wholeRunToggle_ = toolBar->addAction(tr("Whole run"));
   wholeRunToggle_->setObjectName(QStringLiteral("wholeRunToggle"));
   wholeRunToggle_->setCheckable(true);
+  wholeRunToggle_->setIcon(toggle);
   wholeRunToggle_->setToolTip(
       tr("Show the whole run (older parts at reduced resolution) instead of a scrolling window"));
   connect(wholeRunToggle_, &QAction::toggled, this, &ChartPanel::setShowWholeRun);
@@ -191,6 +225,7 @@ QAction* ChartPanel::addQuantityToggle(QToolBar* toolBar, const QString& text,
   toggle->setToolTip(toolTip);
   toggle->setCheckable(true);
   toggle->setChecked(true);
+  toggle->setIcon(toggleIcon());
   connect(toggle, &QAction::toggled, this, &ChartPanel::applyToggles);
   return toggle;
 }
@@ -324,32 +359,52 @@ void ChartPanel::applyToggles() {
   charts_[kDivergenceChart]->setQuantityShown(Quantity::RmsPositionDifference,
                                               divergenceToggle_->isChecked());
 
-  // A chart with nothing to show steps aside; the top chart carries the marker labels and the
-  // bottom one the time axis' labels and title.
-  TimeChart* top = nullptr;
-  TimeChart* bottom = nullptr;
-  std::array<bool, kChartCount> shownCharts{};
+  // A chart with nothing to show steps aside and the others share its room.
   for (std::size_t i = 0; i < charts_.size(); ++i) {
-    TimeChart* chart = charts_[i];
-    shownCharts[i] = isChartShown(chart);
-    chart->setVisible(shownCharts[i]);
-    if (!shownCharts[i]) continue;
-    if (top == nullptr) top = chart;
-    bottom = chart;
+    chartsShown_[i] = isChartShown(charts_[i]);
+    charts_[i]->setVisible(chartsShown_[i]);
   }
-  // A chart that appears would get whatever height its neighbours leave it (the divergence
-  // chart, when compare mode begins, half the panel): when the charts shown change, they share
-  // the height equally again. Heights the user dragged stay until then.
-  if (shownCharts != chartsShown_) {
-    chartsShown_ = shownCharts;
-    splitter_->setSizes(QList<int>(kChartCount, 1000));
-  }
-  for (TimeChart* chart : charts_) {
-    chart->setMarkerLabelsShown(chart == top);
-    chart->setTimeAxisLabelsShown(chart == bottom);
-  }
+  arrangeCharts();
   viewOutOfDate_ = true;
   refresh();
+}
+
+bool ChartPanel::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == scroll_->viewport() && event->type() == QEvent::Resize) arrangeCharts();
+  return QWidget::eventFilter(watched, event);
+}
+
+void ChartPanel::arrangeCharts() {
+  std::vector<TimeChart*> shown;
+  for (std::size_t i = 0; i < charts_.size(); ++i) {
+    if (chartsShown_[i]) shown.push_back(charts_[i]);
+  }
+  const QSize viewport = scroll_->viewport()->size();
+  const int legendHeight = runLegend_->isHidden() ? 0 : runLegend_->sizeHint().height();
+  const int columns =
+      chartColumns(int(shown.size()), QSize(viewport.width(), viewport.height() - legendHeight));
+  if (columns == gridColumns_ && shown == gridCharts_) return;
+  gridColumns_ = columns;
+  gridCharts_ = shown;
+  for (TimeChart* chart : charts_)
+    gridLayout_->removeWidget(chart);
+  for (int row = 0; row < kChartCount; ++row)
+    gridLayout_->setRowStretch(row, 0);
+  for (int column = 0; column < kChartCount; ++column)
+    gridLayout_->setColumnStretch(column, 0);
+  const int count = int(shown.size());
+  const int rows = columns > 0 ? (count + columns - 1) / columns : 0;
+  for (int i = 0; i < count; ++i) {
+    const int row = i / columns;
+    const int column = i % columns;
+    gridLayout_->addWidget(shown[std::size_t(i)], row, column);
+    gridLayout_->setRowStretch(row, 1);
+    gridLayout_->setColumnStretch(column, 1);
+    // The first row carries the marker labels; each column's lowest chart the time axis' labels
+    // and title.
+    shown[std::size_t(i)]->setMarkerLabelsShown(row == 0);
+    shown[std::size_t(i)]->setTimeAxisLabelsShown(i + columns >= count || row == rows - 1);
+  }
 }
 
 void ChartPanel::alignPlotAreas() {
@@ -403,11 +458,11 @@ void ChartPanel::redraw() const {
   viewOutOfDate_ = false;
 }
 
-bool ChartPanel::exportPng(const QString& path) const {
+bool ChartPanel::exportPng(const QString& path, const QString& caption) const {
   if (viewOutOfDate_) redraw();
   if (!isVisible()) {
     // A hidden widget gets its pending resize events only when rendered: render one pixel, so
-    // the splitter places the charts at the panel's size and they size their scenes.
+    // the grid places the charts at the panel's size and they size their scenes.
     chartArea_->grab(QRect(0, 0, 1, 1));
   }
   // Each chart lays itself out in posted events, and lining the plot areas up takes another
@@ -416,10 +471,29 @@ bool ChartPanel::exportPng(const QString& path) const {
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
   }
 
-  QImage image(chartArea_->size() * kExportPixelRatio, QImage::Format_ARGB32_Premultiplied);
+  // The caption above the charts names what they show, so the image explains itself when it is
+  // pasted somewhere else; it wraps at the image's width.
+  QFont captionFont = font();
+  captionFont.setPointSizeF(captionFont.pointSizeF() * 1.1);
+  const int width = chartArea_->width();
+  const QRect textBounds(kCaptionPadding, kCaptionPadding, width - 2 * kCaptionPadding, 10'000);
+  const QRect captionRect =
+      QFontMetrics(captionFont).boundingRect(textBounds, Qt::AlignLeft | Qt::TextWordWrap, caption);
+  const int captionHeight = caption.isEmpty() ? 0 : captionRect.height() + 2 * kCaptionPadding;
+
+  QImage image(QSize(width, chartArea_->height() + captionHeight) * kExportPixelRatio,
+               QImage::Format_ARGB32_Premultiplied);
   image.setDevicePixelRatio(kExportPixelRatio);
   image.fill(chart_colours::kBackground);
-  chartArea_->render(&image);
+  {
+    QPainter painter(&image);
+    painter.setFont(captionFont);
+    painter.setPen(chart_colours::kTitle);
+    painter.drawText(textBounds, Qt::AlignLeft | Qt::TextWordWrap, caption);
+  }
+  chartArea_->render(&image, QPoint(0, captionHeight));
+  // The caption as text too, for whoever reads the file's metadata.
+  image.setText(QStringLiteral("Description"), caption);
   return image.save(path, "PNG");
 }
 

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <utility>
+#include <vector>
 
 #include "chart_data.h"
 #include "fooball/divergence.h"
@@ -18,13 +19,18 @@
 class QAction;
 class QDoubleSpinBox;
 class QLabel;
-class QSplitter;
+class QGridLayout;
+class QScrollArea;
 class QTimer;
 class QToolBar;
 
 namespace fooball::gui {
 
 class TimeChart;
+
+/// How many columns `charts` charts get in `area` (px): each as large as it can be at about
+/// 2.4 : 1, none narrower than 240 px beside another.
+int chartColumns(int charts, QSize area);
 
 /// The live charts against simulated time: momentum, energy and the energy budget's residual
 /// of every run overlaid (1 to 8, as in the run group), each run in its colour in compare mode,
@@ -89,10 +95,11 @@ class ChartPanel : public QWidget {
   void setWindowSeconds(double seconds);  // default 20 s
   void setShowWholeRun(bool whole);
   /// File → Export: PNG of the charts (and the run legend) as laid out at the panel's size
-  /// (also while hidden), at twice the screen's pixels; CSV of every stored sample (header + one
+  /// (also while hidden), at twice the screen's pixels, under `caption` (the scene and the runs;
+  /// also stored as the PNG's "Description" text); CSV of every stored sample (header + one
   /// row per sample per run, with a `run` column holding the run's label, `baseline` for the
   /// chaos baseline). False when the file was not written.
-  bool exportPng(const QString& path) const;
+  bool exportPng(const QString& path, const QString& caption = {}) const;
   bool exportCsv(const QString& path) const;
   /// For tests: points the view currently holds for `runIndex` (or kBaselineRun) in chart
   /// `chart` (after a refresh; the largest count over that run's shown curves), and samples
@@ -135,6 +142,9 @@ class ChartPanel : public QWidget {
                              const QString& objectName);
   /// Shows and hides curves and charts as the toggles say.
   void applyToggles();
+  /// Puts the charts shown into the grid, in as many columns as suit the panel's shape.
+  void arrangeCharts();
+  bool eventFilter(QObject* watched, QEvent* event) override;
   /// Lines up the charts' plot areas, so one time is at one x in every chart.
   void alignPlotAreas();
   void redraw() const;
@@ -143,8 +153,12 @@ class ChartPanel : public QWidget {
   std::array<TimeChart*, kChartCount> charts_{};
   QWidget* chartArea_ = nullptr;  ///< the run legend and the charts: what exportPng draws
   QLabel* runLegend_ = nullptr;
-  QSplitter* splitter_ = nullptr;
-  std::array<bool, kChartCount> chartsShown_{};  ///< as last laid out, to see when that changes
+  QWidget* chartGrid_ = nullptr;
+  QGridLayout* gridLayout_ = nullptr;
+  QScrollArea* scroll_ = nullptr;
+  std::array<bool, kChartCount> chartsShown_{};
+  int gridColumns_ = 0;                 ///< as last arranged, to see when that changes
+  std::vector<TimeChart*> gridCharts_;  ///< the charts in the grid, in order
 
   QAction* wholeRunToggle_ = nullptr;
   QDoubleSpinBox* windowSpin_ = nullptr;  ///< s, the scrolling window's length

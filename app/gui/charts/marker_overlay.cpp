@@ -4,10 +4,11 @@
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QValueAxis>
-#include <array>
 #include <cmath>
+#include <vector>
 
 #include "chart_style.h"
+#include "marker_labels.h"
 
 namespace fooball::gui {
 namespace {
@@ -65,9 +66,9 @@ void MarkerOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QW
   const QFontMetricsF metrics(labelFont);
   const double rowHeight = metrics.height() + 2.0 * kLabelPadding;
 
-  std::array<double, kLabelRows> rowFreeFrom;  // px: where each label row is free again
-  rowFreeFrom.fill(plot.left());
   double lastLineX = -1.0;
+  std::vector<MarkerLabelRequest> requests;
+  std::vector<const ChartMarker*> labelled;
   for (const ChartMarker& marker : *markers_) {
     if (marker.time < start || marker.time > start + span) continue;
     const double x = plot.left() + (marker.time - start) / span * plot.width();
@@ -78,16 +79,15 @@ void MarkerOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QW
       lastLineX = x;
     }
     if (!labelsShown_ || marker.label.isEmpty()) continue;
-    const double labelWidth = metrics.horizontalAdvance(marker.label) + 2.0 * kLabelPadding;
-    for (int row = 0; row < kLabelRows; ++row) {
-      if (x < rowFreeFrom[row]) continue;
-      const QRectF box(x + 2.0, plot.top() + 2.0 + row * rowHeight, labelWidth, rowHeight);
-      painter->fillRect(box, chart_colours::kMarkerLabelBackground);
-      painter->setPen(chart_colours::kLabel);
-      painter->drawText(box, Qt::AlignCenter, marker.label);
-      rowFreeFrom[row] = box.right() + kLabelGap;
-      break;
-    }
+    requests.push_back({x, metrics.horizontalAdvance(marker.label) + 2.0 * kLabelPadding});
+    labelled.push_back(&marker);
+  }
+  const auto rects = layoutMarkerLabels(requests, plot, rowHeight, kLabelRows, kLabelGap);
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    if (!rects[i]) continue;
+    painter->fillRect(*rects[i], chart_colours::kMarkerLabelBackground);
+    painter->setPen(chart_colours::kLabel);
+    painter->drawText(*rects[i], Qt::AlignCenter, labelled[i]->label);
   }
   painter->restore();
 }

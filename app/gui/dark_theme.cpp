@@ -1,0 +1,81 @@
+#include "dark_theme.h"
+
+#include <QApplication>
+#include <QStyleFactory>
+#include <QToolTip>
+#include <algorithm>
+#include <cmath>
+
+namespace fooball::gui {
+namespace {
+
+// The box's surround and the charts' background are #16171c; the window around them one step
+// lighter, so docks and panels read as frames around the box.
+const QColor kWindow{0x20, 0x22, 0x29};
+const QColor kBase{0x16, 0x17, 0x1c};  ///< fields, lists, tables: the charts' background
+const QColor kAlternateBase{0x1c, 0x1e, 0x25};
+const QColor kButton{0x2b, 0x2e, 0x38};
+const QColor kText{0xe6, 0xe7, 0xeb};          ///< 14:1 on kWindow
+const QColor kDisabledText{0x86, 0x8b, 0x98};  ///< 4.8:1 on kWindow: dim, still readable
+const QColor kHighlight{0x2f, 0x6f, 0xd0};
+const QColor kLink{0x7c, 0xb7, 0xff};
+
+/// sRGB channel to linear light, as WCAG defines relative luminance.
+double linear(double channel) {
+  return channel <= 0.04045 ? channel / 12.92 : std::pow((channel + 0.055) / 1.055, 2.4);
+}
+
+double luminance(const QColor& colour) {
+  return 0.2126 * linear(colour.redF()) + 0.7152 * linear(colour.greenF()) +
+         0.0722 * linear(colour.blueF());
+}
+
+}  // namespace
+
+QPalette darkPalette() {
+  QPalette palette;
+  palette.setColor(QPalette::Window, kWindow);
+  palette.setColor(QPalette::WindowText, kText);
+  palette.setColor(QPalette::Base, kBase);
+  palette.setColor(QPalette::AlternateBase, kAlternateBase);
+  palette.setColor(QPalette::Text, kText);
+  palette.setColor(QPalette::PlaceholderText, kDisabledText);
+  palette.setColor(QPalette::Button, kButton);
+  palette.setColor(QPalette::ButtonText, kText);
+  palette.setColor(QPalette::BrightText, Qt::white);
+  palette.setColor(QPalette::ToolTipBase, kButton);
+  palette.setColor(QPalette::ToolTipText, kText);
+  palette.setColor(QPalette::Highlight, kHighlight);
+  palette.setColor(QPalette::HighlightedText, Qt::white);
+  palette.setColor(QPalette::Link, kLink);
+  palette.setColor(QPalette::LinkVisited, kLink);
+  // Fusion shades bevels, frames and handles from these.
+  palette.setColor(QPalette::Light, kButton.lighter(150));
+  palette.setColor(QPalette::Midlight, kButton.lighter(120));
+  palette.setColor(QPalette::Mid, kButton.darker(130));
+  palette.setColor(QPalette::Dark, kBase.darker(130));
+  palette.setColor(QPalette::Shadow, Qt::black);
+  for (const QPalette::ColorRole role :
+       {QPalette::WindowText, QPalette::Text, QPalette::ButtonText, QPalette::HighlightedText}) {
+    palette.setColor(QPalette::Disabled, role, kDisabledText);
+  }
+  palette.setColor(QPalette::Disabled, QPalette::Button, kWindow);
+  palette.setColor(QPalette::Disabled, QPalette::Base, kWindow);
+  palette.setColor(QPalette::Disabled, QPalette::Highlight, kButton);
+  return palette;
+}
+
+void applyDarkTheme(QApplication& app) {
+  app.setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+  const QPalette palette = darkPalette();
+  QApplication::setPalette(palette);
+  QToolTip::setPalette(palette);
+}
+
+double contrastRatio(const QColor& a, const QColor& b) {
+  const double lighter = std::max(luminance(a), luminance(b));
+  const double darker = std::min(luminance(a), luminance(b));
+  return (lighter + 0.05) / (darker + 0.05);
+}
+
+}  // namespace fooball::gui
