@@ -1,10 +1,15 @@
 #include "dark_theme.h"
 
 #include <QApplication>
+#include <QPainter>
+#include <QProxyStyle>
 #include <QStyleFactory>
+#include <QStyleOption>
 #include <QToolTip>
 #include <algorithm>
 #include <cmath>
+
+#include "charts/toggle_icon.h"
 
 namespace fooball::gui {
 namespace {
@@ -29,6 +34,35 @@ double luminance(const QColor& colour) {
   return 0.2126 * linear(colour.redF()) + 0.7152 * linear(colour.greenF()) +
          0.0722 * linear(colour.blueF());
 }
+
+/// Fusion, with check boxes and radio buttons of the app's own (paintCheckBox): Fusion outlines
+/// them in the window colour made darker, which on a dark window leaves an empty box invisible.
+class DarkStyle : public QProxyStyle {
+ public:
+  DarkStyle() : QProxyStyle(QStyleFactory::create(QStringLiteral("Fusion"))) {}
+
+  void drawPrimitive(PrimitiveElement element, const QStyleOption* option, QPainter* painter,
+                     const QWidget* widget) const override {
+    const bool enabled = option->state.testFlag(State_Enabled);
+    switch (element) {
+      case PE_IndicatorCheckBox:
+      case PE_IndicatorItemViewItemCheck: {
+        Qt::CheckState state = Qt::Unchecked;
+        if (option->state.testFlag(State_On)) state = Qt::Checked;
+        if (option->state.testFlag(State_NoChange)) state = Qt::PartiallyChecked;
+        paintCheckBox(*painter, QRectF(option->rect).adjusted(0.5, 0.5, -0.5, -0.5), state,
+                      enabled);
+        return;
+      }
+      case PE_IndicatorRadioButton:
+        paintRadioButton(*painter, QRectF(option->rect).adjusted(0.5, 0.5, -0.5, -0.5),
+                         option->state.testFlag(State_On), enabled);
+        return;
+      default:
+        QProxyStyle::drawPrimitive(element, option, painter, widget);
+    }
+  }
+};
 
 }  // namespace
 
@@ -66,7 +100,7 @@ QPalette darkPalette() {
 }
 
 void applyDarkTheme(QApplication& app) {
-  app.setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+  app.setStyle(new DarkStyle);  // the application owns its style
   const QPalette palette = darkPalette();
   QApplication::setPalette(palette);
   QToolTip::setPalette(palette);

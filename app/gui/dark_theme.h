@@ -7,11 +7,12 @@ class QApplication;
 namespace fooball::gui {
 
 /// The one look of the app: the Fusion style (it draws every widget from the palette, so menus,
-/// docks, dialogs, file dialogs and tooltips all follow it) with a dark palette close to the box's
-/// and the charts' near-black, text light enough to read on it.
+/// docks, dialogs, file dialogs and tooltips all follow it; its check boxes and radio buttons
+/// replaced by ones that show on a dark window) with a dark palette close to the box's and the
+/// charts' near-black, text light enough to read on it.
 QPalette darkPalette();
 
-/// Sets the Fusion style and darkPalette() on `app`: once, at startup, before any window exists.
+/// Sets that style and darkPalette() on `app`: once, at startup, before any window exists.
 void applyDarkTheme(QApplication& app);
 
 /// WCAG's contrast ratio of two colours, 1 (the same) to 21 (black on white): body text needs

@@ -4,10 +4,12 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QFileDialog>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QRadioButton>
 #include <QStyle>
 #include <QTimer>
 
@@ -85,11 +87,41 @@ TEST(DarkTheme, EveryTextRoleIsReadableActiveAndDisabled) {
 
 TEST_F(Theme, MainWindowMenusAndDocksAreDark) {
   open(stillBalls(), "elastic", {"exact", "box2d"});
-  EXPECT_EQ(QApplication::style()->name(), QStringLiteral("fusion"));
   expectAllDark(*window, "main window");
   for (QAction* action : window->menuBar()->actions()) {
     ASSERT_NE(action->menu(), nullptr) << action->text().toStdString();
     expectAllDark(*action->menu(), action->text().toStdString());
+  }
+}
+
+/// Pixels of `widget` as drawn that stand out from its window colour by 3 : 1 at least (the least
+/// contrast for a control's outline).
+int visiblePixels(QWidget& widget) {
+  const QImage image = widget.grab().toImage();
+  const QColor window = widget.palette().color(QPalette::Window);
+  int visible = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x)
+      visible += contrastRatio(image.pixelColor(x, y), window) >= 3.0 ? 1 : 0;
+  }
+  return visible;
+}
+
+TEST_F(Theme, UncheckedBoxesAndRadioButtonsShowOnTheDarkWindow) {
+  // Fusion outlines an indicator in the window colour made darker: on a dark window an empty
+  // check box or radio button was all but invisible.
+  open(stillBalls());
+  for (const bool checked : {false, true}) {
+    QCheckBox box;
+    box.setChecked(checked);
+    QRadioButton radio;
+    radio.setChecked(checked);
+    for (QWidget* widget : std::initializer_list<QWidget*>{&box, &radio}) {
+      widget->resize(widget->sizeHint());
+      // The indicator alone (no text): an outline of about 4 × 12 px at least.
+      EXPECT_GT(visiblePixels(*widget), 30)
+          << widget->metaObject()->className() << (checked ? " checked" : " unchecked");
+    }
   }
 }
 
