@@ -9,6 +9,7 @@
 #include <QShowEvent>
 #include <QStatusBar>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "ball_inspector.h"
@@ -35,9 +36,15 @@ constexpr int kStatusMessageMs = 8000;
 constexpr qint64 kGestureGapMs = 700;
 constexpr int kSidebarWidth = 300;        // px
 constexpr QSize kDefaultSize{1440, 900};  // px, before it is fitted to the screen
-/// The charts' first share of the window's height: at 16:9 the box then stays the largest
-/// thing on screen from 1000×650 to 3840×2160, in compare mode too (layout_test.cpp).
-constexpr double kChartsShareOfHeight = 0.25;
+/// The charts' first height: a quarter of the window's, and 30 px more from a window 900 px tall
+/// on, where that gives one row of charts its full height (title, legend, plot, time axis)
+/// without scrolling. At 16:9 the box stays the largest thing on screen from 1000×650 to
+/// 3840×2160, in compare mode too (layout_test.cpp).
+int firstChartsHeight(int windowHeight) {
+  constexpr double kShare = 0.25;
+  constexpr int kExtra = 30;  // px
+  return int(kShare * windowHeight) + std::clamp(windowHeight - 650, 0, 250) * kExtra / 250;
+}
 
 }  // namespace
 
@@ -305,7 +312,7 @@ void MainWindow::sizeDocks() {
   QMetaObject::invokeMethod(
       this,
       [this] {
-        resizeDocks({chartsDock_}, {int(kChartsShareOfHeight * height())}, Qt::Vertical);
+        resizeDocks({chartsDock_}, {firstChartsHeight(height())}, Qt::Vertical);
         resizeDocks({sidebarDock_}, {kSidebarWidth}, Qt::Horizontal);
       },
       Qt::QueuedConnection);
