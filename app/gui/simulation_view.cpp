@@ -118,32 +118,28 @@ SimulationView::Layout SimulationView::layout() const {
   const int runs = runs_.runCount();
   const bool overlay = runs == 1 || compareLayout_ == CompareLayout::Overlay;
   Layout result;
-  std::vector<QSize> leading;
+  // The legends from the left (the runs' colours, then the speed scale), the hint on the right.
   if (runs > 1 && overlay) {
     // The swatch says filled (run 0) or outlined (the others), as the balls are drawn.
     for (int runIndex = 0; runIndex < runs; ++runIndex)
       result.captions.push_back({Caption::Kind::RunEntry, runIndex, runs_.label(runIndex), {}});
-    for (const Caption& caption : result.captions)
-      leading.push_back(pillSize(caption.text, kSwatchWidth));
   }
-  std::vector<Caption> trailingCaptions;
   if (temperature_) {
-    trailingCaptions.push_back(
+    result.captions.push_back(
         {Caption::Kind::Temperature, 0, tr("speed 0 … %1 m/s").arg(topSpeed_, 0, 'g', 3), {}});
   }
-  trailingCaptions.push_back({Caption::Kind::Paused, 0, pausedText(), {}});
-  std::vector<QSize> trailing;
-  for (const Caption& caption : trailingCaptions) {
-    const int extra = caption.kind == Caption::Kind::Temperature ? kTemperatureBarWidth : 0;
-    trailing.push_back(pillSize(caption.text, extra));
+  std::vector<QSize> leading;
+  for (const Caption& caption : result.captions) {
+    const bool scale = caption.kind == Caption::Kind::Temperature;
+    leading.push_back(pillSize(caption.text, scale ? kTemperatureBarWidth : kSwatchWidth));
   }
-  const CaptionRows rows = layoutCaptionRows(rect(), leading, trailing, kCaptionGap);
+  Caption paused{Caption::Kind::Paused, 0, pausedText(), {}};
+  const CaptionRows rows =
+      layoutCaptionRows(rect(), leading, {pillSize(paused.text, 0)}, kCaptionGap);
   for (std::size_t i = 0; i < leading.size(); ++i)
     result.captions[i].rect = rows.leading[i];
-  for (std::size_t i = 0; i < trailingCaptions.size(); ++i) {
-    trailingCaptions[i].rect = rows.trailing[i];
-    result.captions.push_back(trailingCaptions[i]);
-  }
+  paused.rect = rows.trailing.front();
+  result.captions.push_back(paused);
 
   // Below the rows; the boxes' own margin is the gap under the last one.
   const QRect area = rect().adjusted(0, std::max(0, rows.height - kBoxMargin + kCaptionGap), 0, 0);
