@@ -12,6 +12,7 @@
 #include <QRadioButton>
 #include <QStyle>
 #include <QTimer>
+#include <QToolTip>
 
 #include "benchmark_dialog.h"
 #include "dark_theme.h"
@@ -83,6 +84,13 @@ TEST(DarkTheme, EveryTextRoleIsReadableActiveAndDisabled) {
         << "disabled role " << int(text);
   }
   EXPECT_LT(lightness(palette.color(QPalette::Window)), 0.2);
+}
+
+TEST_F(Theme, TooltipsAreDarkAndReadable) {
+  const QPalette tips = QToolTip::palette();
+  EXPECT_LT(lightness(tips.color(QPalette::ToolTipBase)), 0.25);
+  EXPECT_GE(contrastRatio(tips.color(QPalette::ToolTipText), tips.color(QPalette::ToolTipBase)),
+            4.5);
 }
 
 TEST_F(Theme, MainWindowMenusAndDocksAreDark) {
