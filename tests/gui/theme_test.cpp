@@ -148,14 +148,17 @@ TEST_F(Theme, DialogsAreDark) {
   // The help dialogs are modal: look at each once it is up, then close it.
   for (const auto& show : {showAbout, showMouseAndKeys, showReadingTheCharts}) {
     bool looked = false;
-    QTimer::singleShot(0, [&] {
+    QTimer poll;  // until the dialog is up, however slow the machine
+    poll.setInterval(10);
+    QObject::connect(&poll, &QTimer::timeout, [&] {
       QWidget* dialog = QApplication::activeModalWidget();
-      if (dialog != nullptr) {
-        expectAllDark(*dialog, "help");
-        looked = true;
-        dialog->close();
-      }
+      if (dialog == nullptr) return;
+      poll.stop();
+      expectAllDark(*dialog, "help");
+      looked = true;
+      dialog->close();
     });
+    poll.start();
     show(window.get());
     EXPECT_TRUE(looked);
   }
