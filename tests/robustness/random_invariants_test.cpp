@@ -23,10 +23,10 @@
 namespace fooball::robustness {
 namespace {
 
-/// Run time of the default cases (Release on a 2-core machine): ~10 s each for exact and box2d,
-/// 2 s for elastic alone but up to 25 s under ctest -j2, where its worker threads wait for the
-/// other core; under the sanitizers (1'000 cases; ASan + UBSan slow this suite only ~1.5×, Box2D
-/// itself being uninstrumented) 19 s for all three under ctest -j2. A soak of 10'000 takes 8 s
+/// Run time of the default cases, Release on the loaded 2-core VM, one backend at a time: elastic
+/// 6 s, xpbd 8 s, chipmunk 19 s, exact 43 s, box2d 71 s (elastic up to 150 s under ctest -j2,
+/// where its worker threads wait for the other core); under the sanitizers (1'000 cases, Box2D
+/// itself uninstrumented) 31–95 s a backend under ctest -j2. A soak of 10'000 takes 8 s
 /// (elastic), 1 minute (exact) and 1–3½ minutes (box2d).
 class RandomInvariants : public ::testing::TestWithParam<BackendInfo> {};
 
