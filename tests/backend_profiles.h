@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "consistency/method_errors.h"
+#include "interval.h"
 #include "robustness/case_limits.h"
 
 /// What the test suites need to know about each backend, in one table keyed by registry name
@@ -16,26 +17,26 @@
 /// registry line and its row here.
 namespace fooball::testing {
 
-/// How far a backend may stray from exact answers in tests/conformance_test.cpp.
+/// How far a backend may stray from exact answers in tests/conformance_test.cpp. Every row states
+/// each value as measured × margin, or derived from the method's error; the defaults are derived
+/// from double rounding (u = 2⁻⁵³ ≈ 1.1e-16 per operation).
 struct ConformanceTolerances {
-  double momentum = 1e-12;  ///< relative to Σ m|v|
-  double energy = 1e-9;     ///< relative kinetic-energy change in a no-gravity gas over 5 s
-  double velocity = 1e-9;   ///< relative, for closed-form two-ball and kick answers
-  double position = 1e-9;   ///< m
+  /// |ΔP| relative to Σ m|v|, 300-ball gas with the walls off over 3 s. Default: ~940
+  /// collisions, each rounding the pair's momenta by a few u (4 × 1.1e-16): 4e-13, so 1e-12.
+  double momentum = 1e-12;
+  /// Relative kinetic-energy change, either way, in a 300-ball gas without gravity over 5 s.
+  /// Default: ~3'400 collisions and bounces, each rounding the energy by 4 u: 1.5e-12, so 3e-12.
+  double energy = 3e-12;
+  /// Relative total-energy change of the same gas under 9.81 m/s² over 5 s. A method that gains
+  /// or loses energy there has its measured change pinned both ways. Default: as energy.
+  Interval energyUnderGravity = eitherWay(3e-12);
+  /// Relative, for the closed-form two-ball, kick and gravity answers. Default: a handful of
+  /// roundings of O(1) values, 8 u ≈ 1e-15, so 2e-15.
+  double velocity = 2e-15;
+  /// m, for closed-form flight of a few metres. Default: 480 substeps of rounding at 20 m
+  /// (½ ulp = 1.8e-15 m), 8.5e-13, so 1e-12.
+  double position = 1e-12;
 };
-
-/// A closed range [low, high].
-struct Interval {
-  double low = -std::numeric_limits<double>::infinity();
-  double high = std::numeric_limits<double>::infinity();
-
-  constexpr bool contains(double value) const { return value >= low && value <= high; }
-};
-
-/// [centre − halfWidth, centre + halfWidth].
-constexpr Interval around(double centre, double halfWidth) {
-  return {centre - halfWidth, centre + halfWidth};
-}
 
 /// Every point whose parameter is at or below `atOrBelow` has an error above `error`.
 struct ErrorFloor {
@@ -60,22 +61,28 @@ struct BoundaryExpectation {
   std::optional<Interval> firstFail;
 };
 
+/// A random case (a drawCase seed beyond the default ones) whose energy the method changes far
+/// beyond its bound for that world, or its worst default case: the measured change is pinned
+/// both ways, so that the pin fails when the finding goes away and when it grows.
+struct EnergyFinding {
+  std::uint64_t seed = 0;   ///< 0: no finding
+  Interval relativeChange;  ///< robustness::CaseOutcome::relativeEnergyChange()
+};
+
 /// Everything the suites need to know about one backend.
 struct BackendProfile {
   std::string_view name;              ///< registry name (backends/registry.cpp)
   ConformanceTolerances conformance;  ///< tests/conformance_test.cpp
   /// tests/consistency/short_time_test.cpp; methodError() fills in the solver step.
   MethodError methodError;
-  /// tests/consistency/gas_statistics_test.cpp: relative kinetic-energy drift over the long run
-  /// of a thermalised gas.
+  /// tests/consistency/gas_statistics_test.cpp: relative kinetic-energy drift, either way, over
+  /// the long run of a thermalised gas (at its end and on average over its snapshots).
   double gasEnergyDrift = 0.0;
   /// tests/robustness/random_invariants_test.cpp and the GUI monkey (tests/gui).
   robustness::Tolerances robustness;
   robustness::WorkCap workCap;  ///< tests/robustness/random_invariants_test.cpp
-  /// A random case (seed) whose energy grows under gravity when checked strictly: the finding
-  /// behind robustness.energyKeptUnderGravity(WithCollisions) = false, pinned so that the
-  /// exemption goes when the finding does. 0: the backend has no such exemption.
-  std::uint64_t energyGainSeed = 0;
+  /// tests/robustness/random_invariants_test.cpp: a finding kept in view (seed 0: none).
+  EnergyFinding energyFinding;
   /// tests/robustness/determinism_test.cpp: the hash of the pinned scene's final state with
   /// default options. 0: not pinned yet (the test fails and prints the hash to pin).
   std::uint64_t determinismHash = 0;

@@ -446,40 +446,89 @@ TEST_F(CliTest, QuietPrintsNothingWithAnyBackend) {
   }
 }
 
+/// The number on the summary line that starts with `label` ("energy change:"), or NaN when there
+/// is no such line.
+double summaryNumber(const std::string& summary, const std::string& label) {
+  for (const std::string& line : splitLines(summary)) {
+    if (line.rfind(label, 0) != 0) continue;
+    std::istringstream value(line.substr(label.size()));
+    double number = std::nan("");
+    value >> number;
+    return number;
+  }
+  return std::nan("");
+}
+
 TEST_F(CliTest, EveryBackendRunsACollisionAndKeepsMomentumAndEnergy) {
   // One ball–ball collision and no walls, no gravity: momentum is conserved exactly by the
   // physics and energy by restitution 1, so what the metrics show is the backend's own error,
-  // bounded by its conformance tolerances (tests/backend_profiles.cpp: momentum relative to
-  // Σ m|v|, energy relative to E).
+  // bounded by its profile (tests/backend_profiles.cpp): its conformance tolerances (momentum
+  // relative to Σ m|v|, energy relative to E) and its robustness overlap bound. The summary it
+  // prints must say what the metrics file says.
   const fs::path scene = collidingPairScene();
   const double speedMomentum = fooball::diskMass(0.5) * 3.0 + 2.0 * 2.0;  // Σ m|v|, N·s
+  constexpr double kDt = 0.01;                                            // s
+  constexpr int kSteps = 50;
   for (const fooball::BackendInfo& backend : fooball::registeredBackends()) {
     const std::string name(backend.name);
     SCOPED_TRACE(name);
-    const fooball::testing::ConformanceTolerances& tolerances =
-        fooball::testing::profileFor(name).conformance;
+    const fooball::testing::BackendProfile& profile = fooball::testing::profileFor(name);
+    const fooball::testing::ConformanceTolerances& tolerances = profile.conformance;
     const fs::path csv = pathOf("metrics-" + name + ".csv");
     const CliResult result =
         runCli({"run", "--scene", scene.string(), "--backend", name, "--duration", "0.5", "--dt",
                 "0.01", "--metrics", csv.string()});
     ASSERT_EQ(result.exitCode, 0) << result.err;
-    EXPECT_THAT(result.out, HasSubstr(name));
+    EXPECT_THAT(result.out, ContainsRegex("backend: +" + name + "\n"));
     const std::vector<std::string> lines = splitLines(readText(csv));
-    ASSERT_EQ(lines.size(), 52u);  // the header, the start and 50 steps
+    ASSERT_EQ(lines.size(), kSteps + 2u);  // the header, the start and 50 steps
+    ASSERT_EQ(lines[0], kCsvHeader);
     const std::vector<std::string> start = splitCsvRow(lines[1]);
-    const std::vector<std::string> end = splitCsvRow(lines.back());
-    ASSERT_EQ(end.size(), 11u);
-    EXPECT_GE(std::stoull(end[6]), 1u) << "the balls collided";
+    ASSERT_EQ(start.size(), 11u);
     const double startEnergy = std::stod(start[3]);
+    std::uint64_t collisions = 0;
+    for (std::size_t row = 1; row < lines.size(); ++row) {
+      const std::vector<std::string> cells = splitCsvRow(lines[row]);
+      ASSERT_EQ(cells.size(), 11u) << lines[row];
+      // Every row: its time, the energy and momentum kept, counters that only grow, overlaps
+      // within the backend's bound, nobody escaped.
+      EXPECT_NEAR(std::stod(cells[0]), static_cast<double>(row - 1) * kDt, 1e-12) << lines[row];
+      EXPECT_NEAR(std::stod(cells[3]), startEnergy, tolerances.energy * startEnergy) << lines[row];
+      for (const std::size_t column : {4u, 5u}) {
+        EXPECT_NEAR(std::stod(cells[column]), std::stod(start[column]),
+                    tolerances.momentum * speedMomentum)
+            << "momentum column " << column << ": " << lines[row];
+      }
+      EXPECT_GE(std::stoull(cells[6]), collisions) << lines[row];
+      collisions = std::stoull(cells[6]);
+      EXPECT_EQ(cells[7], "0") << "no wall is reached: " << lines[row];
+      EXPECT_LE(std::stod(cells[9]), profile.robustness.ballOverlap) << lines[row];
+      EXPECT_EQ(cells[10], "0") << "no ball escaped: " << lines[row];
+    }
+    EXPECT_EQ(collisions, 1u) << "the balls collide once";
+    // The summary: the steps, the counters and the changes of the last row against the first.
+    const std::vector<std::string> end = splitCsvRow(lines.back());
     const double endEnergy = std::stod(end[3]);
     ASSERT_TRUE(std::isfinite(endEnergy));
-    EXPECT_NEAR(endEnergy, startEnergy, tolerances.energy * startEnergy);
-    for (const std::size_t column : {4u, 5u}) {
-      EXPECT_NEAR(std::stod(end[column]), std::stod(start[column]),
-                  tolerances.momentum * speedMomentum)
-          << "momentum column " << column;
-    }
-    EXPECT_EQ(end[10], "0") << "no ball escaped";
+    EXPECT_EQ(summaryNumber(result.out, "steps:"), kSteps) << result.out;
+    EXPECT_EQ(summaryNumber(result.out, "ball collisions:"), 1.0) << result.out;
+    EXPECT_EQ(summaryNumber(result.out, "wall collisions:"), 0.0) << result.out;
+    // Printed to 6 significant digits.
+    const double energyChange = (endEnergy - startEnergy) / startEnergy;
+    EXPECT_NEAR(summaryNumber(result.out, "energy change:"), energyChange,
+                1e-5 * std::abs(energyChange))
+        << result.out;
+    EXPECT_LE(std::abs(energyChange), tolerances.energy);
+    EXPECT_NEAR(summaryNumber(result.out, "energy residual:"), endEnergy - startEnergy,
+                1e-5 * std::abs(endEnergy - startEnergy))
+        << result.out;
+    const double momentumChange = std::hypot(std::stod(end[4]) - std::stod(start[4]),
+                                             std::stod(end[5]) - std::stod(start[5])) /
+                                  speedMomentum;
+    EXPECT_NEAR(summaryNumber(result.out, "momentum change:"), momentumChange,
+                1e-5 * momentumChange)
+        << result.out;
+    EXPECT_LE(momentumChange, tolerances.momentum);
   }
 }
 

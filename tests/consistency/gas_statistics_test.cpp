@@ -162,6 +162,8 @@ TEST_P(GasStatistics, ThermalisedGasAgreesWithMaxwellBoltzmannAndAcrossBackends)
     testing::recordMeasurement(run.name + "_enskog_rate_per_ball_s", enskog);
     testing::recordMeasurement(run.name + "_energy_drift",
                                run.finalEnergy / run.initialEnergy - 1.0);
+    testing::recordMeasurement(run.name + "_mean_energy_drift",
+                               run.meanEnergy / run.initialEnergy - 1.0);
   }
 
   // Between the backends: the same mean kinetic energy per ball (each within its tolerance of

@@ -20,11 +20,15 @@
 
 #include "axis_scale.h"
 #include "chart_csv.h"
+#include "chart_reading.h"
 #include "series_points.h"
 #include "time_chart.h"
 
 namespace fooball::gui {
 namespace {
+
+using testing::expectTicksReadTheData;
+using testing::titleFactor;
 
 constexpr int kMaxPoints = TimeChart::kMaxPointsPerCurve;
 
@@ -98,7 +102,7 @@ constexpr std::array kRunCharts{ChartPanel::kMomentumChart, ChartPanel::kEnergyC
                                 ChartPanel::kResidualChart};
 
 /// A panel on screen (offscreen) and wide enough for 2000 points per curve, as in a dock.
-class ChartPanelTest : public testing::Test {
+class ChartPanelTest : public ::testing::Test {
  protected:
   ChartPanelTest() {
     panel.resize(1400, 1000);
@@ -109,18 +113,19 @@ class ChartPanelTest : public testing::Test {
   ChartPanel panel;
 };
 
+/// Checks that every curve of run `run` plots, at its sample times (every `dt` from 0), the
+/// metrics metricsAt(time, run) and divergenceAt(time, run) it was fed; `count` points each.
+void expectRunPlotsItsMetrics(const ChartPanel& panel, int run, int count, double dt);
+
 TEST_F(ChartPanelTest, CompareModeDrawsBothRunsInEveryChart) {
   panel.reset({"elastic", "exact"});
   addRun(panel, 0, 600, 1.0 / 60.0);
   addRun(panel, 1, 600, 1.0 / 60.0);
   panel.refresh();
-  for (const int chart : kRunCharts) {
-    EXPECT_EQ(panel.displayedPointCount(chart, 0), 600) << "chart " << chart;
-    EXPECT_EQ(panel.displayedPointCount(chart, 1), 600) << "chart " << chart;
-  }
+  expectRunPlotsItsMetrics(panel, 0, 600, 1.0 / 60.0);
+  expectRunPlotsItsMetrics(panel, 1, 600, 1.0 / 60.0);
   EXPECT_TRUE(panel.chartShown(ChartPanel::kDivergenceChart));
   EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, 0), 0);  // no self-divergence
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, 1), 600);
 }
 
 TEST_F(ChartPanelTest, SingleModeDrawsRunZeroOnly) {
@@ -129,38 +134,15 @@ TEST_F(ChartPanelTest, SingleModeDrawsRunZeroOnly) {
   addRun(panel, 1, 600, 1.0 / 60.0);    // no such run: ignored
   addBaseline(panel, 600, 1.0 / 60.0);  // no baseline shown: ignored
   panel.refresh();
-  for (const int chart : kRunCharts) {
-    EXPECT_EQ(panel.displayedPointCount(chart, 0), 600) << "chart " << chart;
+  expectRunPlotsItsMetrics(panel, 0, 600, 1.0 / 60.0);
+  for (const int chart : kRunCharts)
     EXPECT_EQ(panel.displayedPointCount(chart, 1), 0) << "chart " << chart;
-  }
   EXPECT_EQ(panel.storedSampleCount(1), 0u);
   EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
   // One run and no baseline: nothing diverges, so the divergence chart and the run legend step
   // aside.
   EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
   EXPECT_TRUE(panel.runLegendText().isEmpty());
-}
-
-/// The power of ten an axis title names ("residual (10⁻¹⁵ J)", "residual / |E₀| (×10³)"), as a
-/// factor: what the axis' numbers are multiplied by. 1 when it names none.
-double titleFactor(const QString& title) {
-  static const QString kDigits = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
-  const qsizetype at = title.indexOf(QStringLiteral("10"));
-  if (at < 0) return 1.0;
-  int exponent = 0;
-  int sign = 1;
-  bool anyDigit = false;
-  for (qsizetype i = at + 2; i < title.size(); ++i) {
-    if (title[i] == QChar(u'⁻') && !anyDigit) {
-      sign = -1;
-    } else if (const qsizetype digit = kDigits.indexOf(title[i]); digit >= 0) {
-      exponent = 10 * exponent + int(digit);
-      anyDigit = true;
-    } else {
-      break;
-    }
-  }
-  return anyDigit ? std::pow(10.0, sign * exponent) : 1.0;
 }
 
 /// Checks that `points` are at the sample times of a run fed every `dt` from 0 and that each y,
@@ -199,41 +181,77 @@ class FourRunsAndBaseline : public ChartPanelTest {
   }
 };
 
+void expectRunPlotsItsMetrics(const ChartPanel& panel, int run, int count, double dt) {
+  const std::string name = "run " + std::to_string(run);
+  const auto momentum = [run](double time) { return metricsAt(time, run).sums.momentum; };
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kMomentumChart, run, 0), count, dt,
+      [&](double time) { return momentum(time).x; }, name + " px");
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kMomentumChart, run, 1), count, dt,
+      [&](double time) { return momentum(time).y; }, name + " py");
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kMomentumChart, run, 2), count, dt,
+      [&](double time) { return std::hypot(momentum(time).x, momentum(time).y); }, name + " |p|");
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kEnergyChart, run, 0), count, dt,
+      [run](double time) { return metricsAt(time, run).sums.kineticEnergy; }, name + " kinetic");
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kEnergyChart, run, 1), count, dt,
+      [run](double time) { return metricsAt(time, run).sums.potentialEnergy; },
+      name + " potential");
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kEnergyChart, run, 2), count, dt,
+      [run](double time) { return metricsAt(time, run).sums.totalEnergy(); }, name + " total");
+  expectPlotted(
+      panel.displayedPoints(ChartPanel::kResidualChart, run, 0), count, dt,
+      [run](double time) { return metricsAt(time, run).energyResidual; }, name + " residual",
+      titleFactor(panel.displayedValueAxisTitle(ChartPanel::kResidualChart)));
+  if (run == 0) {
+    EXPECT_TRUE(panel.displayedPoints(ChartPanel::kDivergenceChart, 0).isEmpty());
+  } else {
+    expectPlotted(
+        panel.displayedPoints(ChartPanel::kDivergenceChart, run), count, dt,
+        [run](double time) { return divergenceAt(time, run).rmsPositionDifference; },
+        name + " divergence");
+  }
+}
+
 TEST_F(FourRunsAndBaseline, EachRunPlotsTheMetricsItWasFed) {
-  for (int run = 0; run < kRuns; ++run) {
-    const std::string name = "run " + std::to_string(run);
-    const auto momentum = [run](double time) { return metricsAt(time, run).sums.momentum; };
-    expectPlotted(
-        panel.displayedPoints(ChartPanel::kMomentumChart, run, 0), kSamples, kDt,
-        [&](double time) { return momentum(time).x; }, name + " px");
-    expectPlotted(
-        panel.displayedPoints(ChartPanel::kMomentumChart, run, 1), kSamples, kDt,
-        [&](double time) { return momentum(time).y; }, name + " py");
-    expectPlotted(
-        panel.displayedPoints(ChartPanel::kMomentumChart, run, 2), kSamples, kDt,
-        [&](double time) { return std::hypot(momentum(time).x, momentum(time).y); }, name + " |p|");
-    expectPlotted(
-        panel.displayedPoints(ChartPanel::kEnergyChart, run, 0), kSamples, kDt,
-        [run](double time) { return metricsAt(time, run).sums.kineticEnergy; }, name + " kinetic");
-    expectPlotted(
-        panel.displayedPoints(ChartPanel::kEnergyChart, run, 1), kSamples, kDt,
-        [run](double time) { return metricsAt(time, run).sums.potentialEnergy; },
-        name + " potential");
-    expectPlotted(
-        panel.displayedPoints(ChartPanel::kEnergyChart, run, 2), kSamples, kDt,
-        [run](double time) { return metricsAt(time, run).sums.totalEnergy(); }, name + " total");
-    expectPlotted(
-        panel.displayedPoints(ChartPanel::kResidualChart, run, 0), kSamples, kDt,
-        [run](double time) { return metricsAt(time, run).energyResidual; }, name + " residual",
-        titleFactor(panel.displayedValueAxisTitle(ChartPanel::kResidualChart)));
-    if (run == 0) {
-      EXPECT_TRUE(panel.displayedPoints(ChartPanel::kDivergenceChart, 0).isEmpty());
-    } else {
-      expectPlotted(
-          panel.displayedPoints(ChartPanel::kDivergenceChart, run), kSamples, kDt,
-          [run](double time) { return divergenceAt(time, run).rmsPositionDifference; },
-          name + " divergence");
+  for (int run = 0; run < kRuns; ++run)
+    expectRunPlotsItsMetrics(panel, run, kSamples, kDt);
+}
+
+TEST_F(FourRunsAndBaseline, EveryChartsTickLabelsBracketItsDataAtItsMagnitude) {
+  QApplication::processEvents();  // Qt Charts lays out its labels then
+  // The data fed, chart by chart: every run's quantities (the divergence chart: runs 1 to 3 and
+  // the baseline), over the 10 s fed.
+  std::array<std::pair<double, double>, ChartPanel::kChartCount> data;
+  data.fill({HUGE_VAL, -HUGE_VAL});
+  const auto include = [&](int chart, double value) {
+    data[chart] = {std::min(data[chart].first, value), std::max(data[chart].second, value)};
+  };
+  for (int i = 0; i < kSamples; ++i) {
+    const double time = i * kDt;
+    for (int run = 0; run < kRuns; ++run) {
+      const Metrics metrics = metricsAt(time, run);
+      const Vec2 p = metrics.sums.momentum;
+      for (const double value : {p.x, p.y, std::hypot(p.x, p.y)})
+        include(ChartPanel::kMomentumChart, value);
+      for (const double value :
+           {metrics.sums.kineticEnergy, metrics.sums.potentialEnergy, metrics.sums.totalEnergy()})
+        include(ChartPanel::kEnergyChart, value);
+      include(ChartPanel::kResidualChart, metrics.energyResidual);
+      if (run > 0)
+        include(ChartPanel::kDivergenceChart, divergenceAt(time, run).rmsPositionDifference);
     }
+    include(ChartPanel::kDivergenceChart, baselineDivergenceAt(time).rmsPositionDifference);
+  }
+  for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
+    expectTicksReadTheData(panel.displayedValueTickLabels(chart),
+                           panel.displayedValueAxisTitle(chart), data[chart].first,
+                           data[chart].second, chart == ChartPanel::kDivergenceChart,
+                           "chart " + std::to_string(chart));
   }
 }
 
@@ -276,6 +294,7 @@ void expectResidualChartReads(ChartPanel& panel, double size, int samples, doubl
       << what << " on " << axisMin << ".." << axisMax << " × " << factor;
   const QStringList labels = panel.displayedValueTickLabels(ChartPanel::kResidualChart);
   EXPECT_GE(labels.size(), 2) << what;
+  expectTicksReadTheData(labels, title, low, high, false, what);
   // Whole numbers, or halves with one decimal; never "-0".
   const QRegularExpression wholeNumber(
       QStringLiteral("^-?[1-9][0-9]{0,4}$|^0$|^-?[0-9]{1,5}\\.[05]$"));
@@ -808,21 +827,75 @@ bool containsColour(const QImage& image, const QColor& colour, int tolerance) {
   return false;
 }
 
-TEST_F(FourRunsAndBaseline, PngLoadsBackWithEveryRunsColourAndTheBaselines) {
+/// The share of the pixel columns of `area` (in `rgb`, Format_RGB32) that hold a pixel within
+/// `tolerance` of `colour` in every channel: how much of a plot's width a curve of that colour
+/// covers.
+double columnsWithColour(const QImage& rgb, const QRect& area, const QColor& colour,
+                         int tolerance) {
+  int columns = 0;
+  for (int x = area.left(); x <= area.right(); ++x) {
+    for (int y = area.top(); y <= area.bottom(); ++y) {
+      const QRgb pixel = rgb.pixel(x, y);
+      if (std::abs(qRed(pixel) - colour.red()) <= tolerance &&
+          std::abs(qGreen(pixel) - colour.green()) <= tolerance &&
+          std::abs(qBlue(pixel) - colour.blue()) <= tolerance) {
+        ++columns;
+        break;
+      }
+    }
+  }
+  return double(columns) / double(area.width());
+}
+
+TEST_F(FourRunsAndBaseline, PngDrawsEveryRunsCurvesInItsColourWhereItsDataIs) {
   QTemporaryDir directory;
   ASSERT_TRUE(directory.isValid());
   const QString path = directory.filePath("charts.png");
   panel.addMarker(8.0, "gravity");
   ASSERT_TRUE(panel.exportPng(path));
 
-  QImage image;
-  ASSERT_TRUE(image.load(path));
+  QImage loaded;
+  ASSERT_TRUE(loaded.load(path));
+  const QImage image = loaded.convertToFormat(QImage::Format_RGB32);
   EXPECT_EQ(image.width(), 2 * panel.width());  // twice the screen's pixels
   EXPECT_GT(image.height(), panel.height());    // the panel less its toolbar, doubled
-  for (int run = 0; run < kRuns; ++run) {
-    EXPECT_TRUE(containsColour(image, ChartPanel::runColour(run), 24)) << run;
+  // In every chart's plot, as drawn in the file: the 10 s fed fill the first half of the 20 s
+  // window, so each run's curves (in its colour; dashed styles and crossings leave gaps) cover
+  // most columns of that half and none of the rest. Run 0 has no divergence curve; the grey
+  // dashed baseline has only that one.
+  const QList<TimeChart*> charts = panel.findChildren<TimeChart*>();
+  ASSERT_EQ(charts.size(), ChartPanel::kChartCount);
+  for (const TimeChart* chart : charts) {
+    const std::string title = chart->valueAxisTitle().toStdString();
+    const bool divergence =
+        chart->valueAxisTitle() == panel.displayedValueAxisTitle(ChartPanel::kDivergenceChart);
+    const QWidget* area = chart;  // the widget the file draws: twice its size
+    while (area != nullptr && area->size() * 2 != image.size())
+      area = area->parentWidget();
+    ASSERT_NE(area, nullptr);
+    const QRectF plot = chart->chart()->plotArea();
+    const QPoint origin = 2 * chart->mapTo(area, plot.topLeft().toPoint());
+    const QSize size = 2 * plot.size().toSize();
+    const QRect data(origin, QSize(size.width() / 2, size.height()));
+    const QRect after(origin + QPoint(size.width() * 21 / 40, 0),
+                      QSize(size.width() * 19 / 40, size.height()));
+    for (int run = 0; run < kRuns; ++run) {
+      const QColor colour = ChartPanel::runColour(run);
+      const bool drawn = run > 0 || !divergence;
+      EXPECT_GE(columnsWithColour(image, data, colour, 24), drawn ? 0.75 : 0.0)
+          << title << ", run " << run;
+      EXPECT_LE(columnsWithColour(image, data, colour, 24), drawn ? 1.0 : 0.01)
+          << title << ", run " << run;
+      EXPECT_LE(columnsWithColour(image, after, colour, 24), 0.01) << title << ", run " << run;
+    }
+    const double baseline = columnsWithColour(image, data, ChartPanel::baselineColour(), 6);
+    if (divergence) {
+      EXPECT_GE(baseline, 0.5) << title;
+    } else {
+      EXPECT_LE(baseline, 0.01) << title;
+    }
+    EXPECT_LE(columnsWithColour(image, after, ChartPanel::baselineColour(), 6), 0.01) << title;
   }
-  EXPECT_TRUE(containsColour(image, ChartPanel::baselineColour(), 6));
 }
 
 TEST(HiddenChartPanel, PngDrawsTheChartsAtThePanelsSize) {

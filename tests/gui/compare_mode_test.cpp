@@ -10,9 +10,14 @@
 #include <QSpinBox>
 #include <QToolButton>
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
 #include <thread>
+#include <vector>
 
 #include "backend_options_form.h"
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "compare_readout.h"
 #include "fooball/number_text.h"
@@ -76,33 +81,79 @@ TEST_F(CompareMode, SameSpecStaysIdenticalAndTheBaselineDepartsFromIt) {
   EXPECT_GT(group().baselineDivergence()->rmsPositionDifference, 10.0 * start);
 }
 
+/// One row of the readout as numbers: "box2d: RMS 0.0123 m, max 0.0456 m, energy +1.2e-05 J
+/// (+0.0001 %), momentum 3.4e-06 N·s".
+struct ReadoutRow {
+  QString label;
+  double rms = std::nan("");            ///< m
+  double max = std::nan("");            ///< m
+  double energy = std::nan("");         ///< J
+  double energyPercent = std::nan("");  ///< % of run 0's energy
+  double momentum = std::nan("");       ///< N·s
+};
+
+/// The readout's rows after its first line (which names run 0), as a user reads them.
+std::vector<ReadoutRow> readoutRows(const CompareReadout& readout) {
+  static const QRegularExpression row(QStringLiteral(
+      "^(.+): RMS (\\S+) m, max (\\S+) m, energy (\\S+) J \\((\\S+) %\\), momentum (\\S+) N·s$"));
+  std::vector<ReadoutRow> rows;
+  const QStringList lines = readout.text().split(QLatin1Char('\n'));
+  for (qsizetype i = 1; i < lines.size(); ++i) {
+    const QRegularExpressionMatch match = row.match(lines[i]);
+    EXPECT_TRUE(match.hasMatch()) << lines[i].toStdString();
+    if (!match.hasMatch()) continue;
+    const auto number = [&](int group) {
+      bool ok = false;
+      const double value = match.captured(group).toDouble(&ok);
+      EXPECT_TRUE(ok) << "'" << match.captured(group).toStdString() << "' in "
+                      << lines[i].toStdString();
+      return value;
+    };
+    rows.push_back({match.captured(1), number(2), number(3), number(4), number(5), number(6)});
+  }
+  return rows;
+}
+
+/// `shown` is `value` to the digits the readout prints (4 significant, or 3 in exponent form).
+void expectFigure(double shown, double value, const std::string& what) {
+  EXPECT_NEAR(shown, value, 5e-3 * std::abs(value)) << what;
+}
+
+/// Every figure of every row of the readout is the run group's divergence of that run from run 0
+/// (and the baseline's), to the digits shown, and the rows name the runs in order.
+void expectReadoutShows(const CompareReadout& readout, const RunController& runs,
+                        const char* when) {
+  const RunGroup& group = runs.group();
+  const std::vector<ReadoutRow> rows = readoutRows(readout);
+  const std::size_t runRows = group.runCount() - 1;
+  ASSERT_EQ(rows.size(), runRows + (group.hasBaseline() ? 1 : 0))
+      << when << ": " << readout.text().toStdString();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const bool baseline = i == runRows;
+    const Divergence divergence = baseline ? *group.baselineDivergence() : group.divergence(i + 1);
+    const std::string what = std::string(when) + ", row " + rows[i].label.toStdString();
+    EXPECT_EQ(rows[i].label,
+              baseline ? QStringLiteral("chaos baseline") : runs.label(static_cast<int>(i + 1)))
+        << what;
+    expectFigure(rows[i].rms, divergence.rmsPositionDifference, what + " RMS");
+    expectFigure(rows[i].max, divergence.maxPositionDifference, what + " max");
+    expectFigure(rows[i].energy, divergence.energyDifference, what + " energy");
+    expectFigure(rows[i].energyPercent, 100.0 * divergence.relativeEnergyDifference,
+                 what + " energy %");
+    expectFigure(rows[i].momentum, divergence.momentumDifference, what + " momentum");
+  }
+}
+
 TEST_F(CompareMode, TheReadoutShowsTheRunGroupsOwnDivergenceNumbers) {
-  open(fooball::testing::gas(80), "elastic", {"box2d"});
+  open(fooball::testing::gas(80), "elastic", {"box2d", "exact"});
+  ASSERT_TRUE(group().hasBaseline());
   frames(120);
   window->showReadouts();
   const Divergence divergence = group().divergence(1);
   EXPECT_GT(divergence.maxPositionDifference, 0.0);
   EXPECT_LE(divergence.rmsPositionDifference, divergence.maxPositionDifference);
-  const QString text = window->compareReadout()->text();
-  EXPECT_TRUE(text.contains(QStringLiteral("box2d"))) << text.toStdString();
-  // The readout's figures are the group's, to the digits shown (3 significant).
-  const QString rms = QString::number(divergence.rmsPositionDifference, 'g', 3);
-  EXPECT_TRUE(text.contains(rms)) << text.toStdString() << " lacks " << rms.toStdString();
-}
-
-/// The readout's RMS figure for run 1 as a number (it shows "RMS 0.0123 m" or "RMS 1.23e-07 m").
-double readoutRms(const CompareReadout& readout) {
-  const QStringList lines = readout.text().split(QLatin1Char('\n'));
-  if (lines.size() < 2) return std::nan("");
-  const qsizetype at = lines[1].indexOf(QStringLiteral("RMS "));
-  return at < 0 ? std::nan("") : lines[1].mid(at + 4).section(QLatin1Char(' '), 0, 0).toDouble();
-}
-
-void expectReadoutShows(const CompareReadout& readout, const Divergence& divergence,
-                        const char* when) {
-  const double rms = divergence.rmsPositionDifference;
-  // The figures have 3 or 4 significant digits.
-  EXPECT_NEAR(readoutRms(readout), rms, 5e-3 * rms) << when << ": " << readout.text().toStdString();
+  EXPECT_NE(group().divergence(1).energyDifference, 0.0) << "Box2D's energy differs: a figure";
+  expectReadoutShows(*window->compareReadout(), runs(), "after 2 s");
 }
 
 TEST_F(CompareMode, TheReadoutFollowsRestartAndSingleStepsWhilePaused) {
@@ -111,18 +162,115 @@ TEST_F(CompareMode, TheReadoutFollowsRestartAndSingleStepsWhilePaused) {
   window->actions().pause()->trigger();
   ASSERT_TRUE(runs().paused());
   const double before = group().divergence(1).rmsPositionDifference;
-  expectReadoutShows(*window->compareReadout(), group().divergence(1), "paused");
+  expectReadoutShows(*window->compareReadout(), runs(), "paused");
 
   window->restart();
   const double restarted = group().divergence(1).rmsPositionDifference;
   ASSERT_LT(restarted, 1e-3 * before) << "at t = 0 only Box2D's float rounding differs";
-  expectReadoutShows(*window->compareReadout(), group().divergence(1), "after Restart");
+  expectReadoutShows(*window->compareReadout(), runs(), "after Restart");
 
   for (int step = 0; step < 3; ++step) {
     window->actions().step()->trigger();
-    expectReadoutShows(*window->compareReadout(), group().divergence(1), "after Single step");
+    expectReadoutShows(*window->compareReadout(), runs(), "after Single step");
   }
   EXPECT_NE(group().divergence(1).rmsPositionDifference, restarted) << "the steps moved the runs";
+}
+
+/// What one run (or the baseline) was at a moment: its metrics and its divergence from run 0.
+struct RunState {
+  Metrics metrics;
+  Divergence divergence;
+};
+
+/// A curve of the charts and the number it plots from a run's state.
+struct PlottedQuantity {
+  int chart;
+  int curve;
+  double (*value)(const RunState&);
+  const char* name;
+};
+
+constexpr PlottedQuantity kPlotted[] = {
+    {ChartPanel::kMomentumChart, 0, [](const RunState& s) { return s.metrics.sums.momentum.x; },
+     "px"},
+    {ChartPanel::kMomentumChart, 1, [](const RunState& s) { return s.metrics.sums.momentum.y; },
+     "py"},
+    {ChartPanel::kMomentumChart, 2,
+     [](const RunState& s) {
+       return std::hypot(s.metrics.sums.momentum.x, s.metrics.sums.momentum.y);
+     },
+     "|p|"},
+    {ChartPanel::kEnergyChart, 0, [](const RunState& s) { return s.metrics.sums.kineticEnergy; },
+     "kinetic"},
+    {ChartPanel::kEnergyChart, 1, [](const RunState& s) { return s.metrics.sums.potentialEnergy; },
+     "potential"},
+    {ChartPanel::kEnergyChart, 2, [](const RunState& s) { return s.metrics.sums.totalEnergy(); },
+     "total"},
+    {ChartPanel::kResidualChart, 0, [](const RunState& s) { return s.metrics.energyResidual; },
+     "residual"},
+    {ChartPanel::kDivergenceChart, 0,
+     [](const RunState& s) { return s.divergence.rmsPositionDifference; }, "divergence"},
+};
+
+TEST_F(CompareMode, TheChartsPlotEveryRunsMetricsAndTheirTicksReadThem) {
+  Scene scene = fooball::testing::gas(60);
+  scene.world.gravity = {0.0, -9.81};  // potential energy and a residual that are not all 0
+  open(scene, "elastic", {"box2d", "exact"});
+  ASSERT_TRUE(group().hasBaseline());
+  const int runCount = runs().runCount();
+  // Every run's state after every frame, by simulated time (the charts sample some of them);
+  // index runCount holds the baseline's.
+  std::map<double, std::vector<RunState>> states;
+  const auto record = [&] {
+    std::vector<RunState>& at = states[group().time()];
+    at.clear();
+    for (int run = 0; run < runCount; ++run)
+      at.push_back({group().run(std::size_t(run)).metrics(), group().divergence(std::size_t(run))});
+    at.push_back({group().baseline()->metrics(), *group().baselineDivergence()});
+  };
+  record();
+  for (int frame = 0; frame < 90; ++frame) {
+    frames(1);
+    record();
+  }
+  ChartPanel& charts = *window->charts();
+  charts.refresh();
+  QApplication::processEvents();  // Qt Charts lays out its labels then
+
+  std::array<std::pair<double, double>, ChartPanel::kChartCount> plotted;
+  plotted.fill({HUGE_VAL, -HUGE_VAL});
+  for (const PlottedQuantity& quantity : kPlotted) {
+    const bool divergence = quantity.chart == ChartPanel::kDivergenceChart;
+    const double factor = titleFactor(charts.displayedValueAxisTitle(quantity.chart));
+    for (int run = 0; run <= runCount; ++run) {
+      const int index = run == runCount ? ChartPanel::kBaselineRun : run;
+      const QList<QPointF> points = charts.displayedPoints(quantity.chart, index, quantity.curve);
+      const std::string what =
+          std::string(quantity.name) + " of " +
+          (run == runCount ? std::string("the baseline") : runs().label(run).toStdString());
+      // Run 0 has no divergence from itself; the baseline has only its divergence.
+      if (divergence ? run == 0 : run == runCount) {
+        EXPECT_TRUE(points.isEmpty()) << what;
+        continue;
+      }
+      ASSERT_GE(points.size(), 25) << what << ": 90 frames, a sample every few";
+      for (const QPointF& point : points) {
+        const auto at = states.find(point.x());
+        ASSERT_NE(at, states.end()) << what << ": no state at t = " << point.x();
+        const double value = quantity.value(at->second[std::size_t(run)]);
+        EXPECT_NEAR(point.y() * factor, value, 4e-16 * std::abs(value))
+            << what << " at t = " << point.x();
+        plotted[quantity.chart] = {std::min(plotted[quantity.chart].first, value),
+                                   std::max(plotted[quantity.chart].second, value)};
+      }
+    }
+  }
+  for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
+    expectTicksReadTheData(charts.displayedValueTickLabels(chart),
+                           charts.displayedValueAxisTitle(chart), plotted[chart].first,
+                           plotted[chart].second, chart == ChartPanel::kDivergenceChart,
+                           "chart " + std::to_string(chart));
+  }
 }
 
 TEST_F(CompareMode, TheCountersShowEachRunsOwnCollisionsBouncesOverlapAndEscapes) {

@@ -1,12 +1,15 @@
 #include "case_run.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "backend_profiles.h"
+#include "fooball/metrics.h"
 #include "fooball/scene_error.h"
+#include "fooball/scene_file.h"
 #include "fooball/simulation.h"
 
 namespace fooball::robustness {
@@ -95,6 +98,114 @@ class WorkMeter {
   double work_ = 0.0;
 };
 
+/// The deepest overlap of a ball with a wall (every wall is on in a closed case), less `slack`
+/// (m), as a fraction of the ball's radius.
+double deepestWallOverlap(const Simulation& simulation, double slack) {
+  const Box box = simulation.box();
+  double deepest = 0.0;
+  for (std::size_t i = 0; i < simulation.ballCount(); ++i) {
+    const Vec2 p = simulation.positions()[i];
+    const double r = simulation.radii()[i];
+    const double nearestWall = std::min({p.x, box.width - p.x, p.y, box.height - p.y});
+    deepest = std::max(deepest, (r - nearestWall - slack) / r);
+  }
+  return deepest;
+}
+
+/// Ball collisions on from the start to the end: every overlap is the method's to resolve.
+bool collisionsStayOn(const RandomCase& c) {
+  return c.scene.world.ballCollisions &&
+         std::all_of(c.worldChanges.begin(), c.worldChanges.end(),
+                     [](const WorldChange& change) { return change.world.ballCollisions; });
+}
+
+EnergyWorld energyWorldOf(const RandomCase& c) {
+  if (!c.isolated()) return EnergyWorld::None;
+  if (c.scene.world.gravity == Vec2{}) return EnergyWorld::WithoutGravity;
+  if (!c.closed()) return EnergyWorld::UnderGravityOpen;
+  return c.scene.world.ballCollisions ? EnergyWorld::UnderGravityWithCollisions
+                                      : EnergyWorld::UnderGravity;
+}
+
+/// The value of the backend's diagnostics entry `name` (0 when it has none).
+double diagnostic(const Simulation& simulation, std::string_view name) {
+  for (const Diagnostic& entry : simulation.backend().diagnostics()) {
+    if (entry.name == name) return entry.value;
+  }
+  return 0.0;
+}
+
+/// Whether every ball travels at most `limit` of the smallest radius in one substep: the
+/// fastest speed × dt / substeps (substeps: the option of role OptionRole::Substeps, 1 for a
+/// backend without one; options that raise it further only shorten the travel).
+bool resolved(const Simulation& simulation, double limit) {
+  if (simulation.ballCount() == 0 || limit == std::numeric_limits<double>::infinity()) return true;
+  const OptionSet& options = simulation.backend().options();
+  const OptionSpec* substeps = options.withRole(OptionRole::Substeps);
+  const double substep = simulation.dt() / (substeps ? options.value(substeps->name) : 1.0);
+  double fastest = 0.0;
+  for (const Vec2 v : simulation.velocities())
+    fastest = std::max(fastest, length(v));
+  const double smallest = *std::min_element(simulation.radii().begin(), simulation.radii().end());
+  return fastest * substep <= limit * smallest;
+}
+
+/// Counts the steps in which a cumulative diagnostics counter rose (none for the name "").
+class StepCounter {
+ public:
+  explicit StepCounter(std::string_view name) : name_(name) {}
+
+  /// Whether the counter rose in the step just taken. A reload (setBall may reload) restarts the
+  /// backend's count, so a lower value is a count afresh.
+  bool rose(const Simulation& simulation) {
+    if (name_.empty()) return false;
+    const double value = diagnostic(simulation, name_);
+    const bool rose = value > (value >= last_ ? last_ : 0.0);
+    last_ = value;
+    return rose;
+  }
+
+ private:
+  std::string_view name_;
+  double last_ = 0.0;
+};
+
+std::uint64_t bitsOf(double value) {
+  return std::bit_cast<std::uint64_t>(value);
+}
+
+/// How `reopened` differs from `saved`, bit for bit (-0.0 is not 0.0), or "".
+std::string differenceOf(const Scene& saved, const Scene& reopened) {
+  if (reopened.name != saved.name || reopened.box != saved.box || reopened.world != saved.world ||
+      reopened.savedFrom != saved.savedFrom) {
+    return "its name, box, world or saved_from changed";
+  }
+  if (reopened.balls.size() != saved.balls.size()) return "its ball count changed";
+  for (std::size_t i = 0; i < saved.balls.size(); ++i) {
+    const BallDef& a = saved.balls[i];
+    const BallDef& b = reopened.balls[i];
+    const bool same = bitsOf(a.position.x) == bitsOf(b.position.x) &&
+                      bitsOf(a.position.y) == bitsOf(b.position.y) &&
+                      bitsOf(a.velocity.x) == bitsOf(b.velocity.x) &&
+                      bitsOf(a.velocity.y) == bitsOf(b.velocity.y) &&
+                      bitsOf(a.radius) == bitsOf(b.radius) && bitsOf(a.mass) == bitsOf(b.mass) &&
+                      a.color == b.color;
+    if (!same) return "balls[" + std::to_string(i) + "] changed";
+  }
+  return "";
+}
+
+/// The state now, saved as File → Save writes it, reopened: "" when it comes back bit for bit.
+std::string reopenSavedState(const Simulation& simulation, std::string_view backend) {
+  const Scene saved = simulation.savedScene(backend);
+  try {
+    const std::string difference = differenceOf(saved, parseScene(writeScene(saved), "saved"));
+    return difference.empty() ? "" : "the saved state reopened, but " + difference;
+  } catch (const SceneError& error) {
+    return std::string("the saved state does not reopen: ") + error.what();
+  }
+}
+
 void apply(const RandomCase& c, int step, Simulation& simulation) {
   for (const WorldChange& change : c.worldChanges) {
     if (change.step == step) simulation.setWorld(change.world);
@@ -135,7 +246,7 @@ WorkCap workCapFor(std::string_view backend) {
   return testing::profileFor(backend).workCap;
 }
 
-std::string runCase(const RandomCase& c, const BackendInfo& info, const Tolerances& tolerances,
+CaseOutcome runCase(const RandomCase& c, const BackendInfo& info, const Tolerances& tolerances,
                     const WorkCap& cap) {
   std::unique_ptr<Backend> backend = info.create();
   for (const auto& [name, value] : c.options)
@@ -143,40 +254,112 @@ std::string runCase(const RandomCase& c, const BackendInfo& info, const Toleranc
   Simulation simulation(c.scene, std::move(backend));
   simulation.setDt(c.dt);
   const bool closed = c.closed();
+  const bool collisionsOn = collisionsStayOn(c);
   const std::size_t count = c.scene.balls.size();
-  const double startEnergy = energyAboveBoxMinimum(simulation);
-  const double scale = energyScale(simulation);
+  CaseOutcome outcome;
+  outcome.isolated = c.isolated();
+  outcome.energyWorld = energyWorldOf(c);
+  outcome.startEnergy = energyAboveBoxMinimum(simulation);
+  outcome.energyScale = energyScale(simulation);
   WorkMeter meter(cap, count);
-  int stepsRun = 0;
-  while (stepsRun < c.steps) {
-    const int step = stepsRun++;
+  StepCounter unresolvedSteps(tolerances.unresolvedSteps);
+  bool resolvedSoFar = resolved(simulation, tolerances.resolvedTravel);
+  while (outcome.stepsRun < c.steps) {
+    const int step = outcome.stepsRun++;
     apply(c, step, simulation);
     simulation.step();
-    if (simulation.ballCount() != count || simulation.backend().ballCount() != count)
-      return "the ball count changed at step " + std::to_string(step);
+    if (simulation.ballCount() != count || simulation.backend().ballCount() != count) {
+      outcome.stepViolation = "the ball count changed at step " + std::to_string(step);
+      return outcome;
+    }
     if (std::string violation = checkState(simulation, closed, tolerances.wallSlack);
-        !violation.empty())
-      return "at step " + std::to_string(step) + ": " + violation;
-    if (!meter.count(simulation)) break;
+        !violation.empty()) {
+      outcome.stepViolation = "at step " + std::to_string(step) + ": " + violation;
+      return outcome;
+    }
+    resolvedSoFar = resolvedSoFar && !unresolvedSteps.rose(simulation) &&
+                    resolved(simulation, tolerances.resolvedTravel);
+    if (resolvedSoFar) {
+      ++outcome.resolvedSteps;
+      if (collisionsOn) {
+        const double overlap = maxOverlap(simulation.positions(), simulation.radii(),
+                                          simulation.box(), Walls{false, false, false, false});
+        if (overlap > outcome.ballOverlap || outcome.ballOverlapStep < 0) {
+          outcome.ballOverlap = overlap;
+          outcome.ballOverlapStep = step;
+        }
+      }
+      if (closed) {
+        const double overlap = deepestWallOverlap(simulation, tolerances.wallSlack);
+        if (overlap > outcome.wallOverlap || outcome.wallOverlapStep < 0) {
+          outcome.wallOverlap = overlap;
+          outcome.wallOverlapStep = step;
+        }
+      }
+    }
+    if (!meter.count(simulation)) {
+      outcome.stoppedByWorkCap = outcome.stepsRun < c.steps;
+      break;
+    }
   }
-  const bool checkEnergy =
-      c.scene.world.gravity == Vec2{} ||
-      (tolerances.energyKeptUnderGravity &&
-       (tolerances.energyKeptUnderGravityWithCollisions || !c.scene.world.ballCollisions));
-  if (c.isolated() && checkEnergy) {
-    const double endEnergy = energyAboveBoxMinimum(simulation);
-    const double allowed =
-        (1.0 + tolerances.energyRelative) * startEnergy + tolerances.energyAbsolute * scale;
-    if (!(endEnergy <= allowed)) {
-      std::ostringstream out;
-      out.precision(17);
-      out << "energy grew from " << startEnergy << " J to " << endEnergy << " J (allowed "
-          << allowed << " J, ratio " << endEnergy / startEnergy << ")";
-      if (stepsRun < c.steps) out << " in the " << stepsRun << " steps run before the work cap";
+  outcome.endEnergy = energyAboveBoxMinimum(simulation);
+  if (!tolerances.reportedEnergyChange.empty())
+    outcome.reportedEnergyChange = diagnostic(simulation, tolerances.reportedEnergyChange);
+  outcome.reopenError = reopenSavedState(simulation, info.name);
+  return outcome;
+}
+
+std::string violationOf(const CaseOutcome& outcome, const Tolerances& tolerances) {
+  if (!outcome.stepViolation.empty()) return outcome.stepViolation;
+  std::ostringstream out;
+  out.precision(17);
+  const char* cut = outcome.stoppedByWorkCap ? " (in the steps run before the work cap)" : "";
+  const testing::Interval* energy = nullptr;
+  switch (outcome.energyWorld) {
+    case EnergyWorld::None:
+      break;
+    case EnergyWorld::WithoutGravity:
+      energy = &tolerances.energyWithoutGravity;
+      break;
+    case EnergyWorld::UnderGravity:
+      energy = &tolerances.energyUnderGravity;
+      break;
+    case EnergyWorld::UnderGravityWithCollisions:
+      energy = &tolerances.energyUnderGravityWithCollisions;
+      break;
+    case EnergyWorld::UnderGravityOpen:
+      energy = &tolerances.energyUnderGravityOpen;
+      break;
+  }
+  if (energy != nullptr) {
+    const double change = outcome.endEnergy - outcome.startEnergy - outcome.reportedEnergyChange;
+    const double slack = tolerances.energyAbsolute * outcome.energyScale;
+    const double low = energy->low * outcome.startEnergy - slack;
+    const double high = energy->high * outcome.startEnergy + slack;
+    if (!(change >= low && change <= high)) {
+      out << "energy " << (change > 0.0 ? "grew" : "fell") << " from " << outcome.startEnergy
+          << " J to " << outcome.endEnergy << " J, " << outcome.reportedEnergyChange
+          << " J of it reported by the method (relative change " << outcome.relativeEnergyChange()
+          << ", allowed " << energy->low << " to " << energy->high << " of it, ±" << slack << " J)"
+          << cut;
       return out.str();
     }
   }
-  return "";
+  const double ballOverlap =
+      outcome.isolated ? tolerances.ballOverlap : tolerances.ballOverlapWithInteractions;
+  if (outcome.ballOverlap > ballOverlap) {
+    out << "balls overlapped by " << outcome.ballOverlap << " of the smaller radius at step "
+        << outcome.ballOverlapStep << " (allowed " << ballOverlap
+        << (outcome.isolated ? " in an isolated case)" : " with interactions)");
+    return out.str();
+  }
+  if (outcome.wallOverlap > tolerances.wallOverlap) {
+    out << "a ball overlapped a wall by " << outcome.wallOverlap << " of its radius beyond the "
+        << tolerances.wallSlack << " m slack at step " << outcome.wallOverlapStep << " (allowed "
+        << tolerances.wallOverlap << ")";
+    return out.str();
+  }
+  return outcome.reopenError;
 }
 
 }  // namespace fooball::robustness
