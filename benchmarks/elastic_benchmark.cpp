@@ -44,27 +44,32 @@ BENCHMARK(ElasticGasStep)
     ->UseRealTime()
     ->ComputeStatistics("min", minimum);
 
-/// Args: balls, threads; the standard gas at packing fraction 0.2. Compare the times of 1 and
-/// 2 threads at the same count for the speed-up (the results are the same bit for bit:
-/// tests/elastic_threads_test.cpp). 64 steps each: four periods of the (serial) reordering of
-/// the balls by cell, which a shorter run would catch or miss by chance.
+/// Args: balls, threads, balls_per_thread; the standard gas at packing fraction 0.2. Compare
+/// the times at the same count: threads 1 against threads 2 with balls_per_thread 0 (two
+/// workers always) for what a second worker saves or costs, and with the default 250'000 for
+/// what the backend picks (the results are the same bit for bit:
+/// tests/elastic_threads_test.cpp). Run it beside busy processes too: a worker that waits for
+/// a descheduled one is where threads cost most. 64 steps each: four periods of the (serial)
+/// reordering of the balls by cell, which a shorter run would catch or miss by chance.
 void ElasticThreads(benchmark::State& state) {
   const auto balls = static_cast<std::size_t>(state.range(0));
   auto backend = makeElasticBackend();
   backend->setOption("substeps", 1);
   backend->setOption("threads", static_cast<double>(state.range(1)));
+  backend->setOption("balls_per_thread", static_cast<double>(state.range(2)));
   backend->load(standardGas(balls, 0.2));
   backend->step(kDt, {});
   for (auto _ : state)
     backend->step(kDt, {});
   setStepCounters(state, balls);
+  state.counters["workers"] = diagnostic(*backend, "workers");
 }
 
 BENCHMARK(ElasticThreads)
-    ->ArgNames({"balls", "threads"})
-    ->ArgsProduct({{100'000, 400'000, 1'000'000}, {1, 2}})
+    ->ArgNames({"balls", "threads", "balls_per_thread"})
+    ->ArgsProduct({{38, 300, 3'000, 30'000, 300'000, 600'000, 1'000'000}, {1, 2}, {0, 250'000}})
     ->Iterations(64)
-    ->Repetitions(3)
+    ->Repetitions(5)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->ComputeStatistics("min", minimum);

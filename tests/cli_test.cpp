@@ -176,6 +176,32 @@ TEST_F(CliTest, ShortPresetRunExitsZeroWithSummaryAndQuietStderr) {
   EXPECT_THAT(result.err, IsEmpty());
 }
 
+TEST_F(CliTest, StepsCutShortAtAnEventCapAreAWarningAndTheDefaultIsExact) {
+  // Rain settling into a pile: a few thousand events a step, far past one per ball.
+  const std::vector<std::string> rain{"--preset", "rain", "--duration", "2", "--quiet"};
+  std::vector<std::string> exact{"run", "--backend", "exact"};
+  exact.insert(exact.end(), rain.begin(), rain.end());
+  const CliResult uncapped = runCli(exact);
+  EXPECT_EQ(uncapped.exitCode, 0) << uncapped.err;
+  EXPECT_THAT(uncapped.err, IsEmpty());
+
+  exact.insert(exact.end(), {"--option", "max_events_per_ball=1"});
+  const CliResult capped = runCli(exact);
+  EXPECT_EQ(capped.exitCode, 0) << capped.err;
+  EXPECT_EQ(lineCount(capped.err), 1u) << capped.err;
+  EXPECT_THAT(capped.err, ContainsRegex("^fooball-cli: warning: [0-9]+ steps were cut short"));
+
+  std::vector<std::string> compare{"compare", "--run", "exact", "--run",
+                                   "exact:max_events_per_ball=1"};
+  compare.insert(compare.end(), rain.begin(), rain.end());
+  const CliResult compared = runCli(compare);
+  EXPECT_EQ(compared.exitCode, 0) << compared.err;
+  EXPECT_EQ(lineCount(compared.err), 1u) << compared.err;
+  EXPECT_THAT(compared.err,
+              HasSubstr("warning: run exact:max_events_per_ball=1: " +
+                        capped.err.substr(std::string("fooball-cli: warning: ").size())));
+}
+
 TEST_F(CliTest, SummaryReportsStepsDtAndChangedOptions) {
   const CliResult result = runCli({"run", "--scene", twoBallsScene().string(), "--duration", "0.5",
                                    "--dt", "0.01", "--substeps", "3"});

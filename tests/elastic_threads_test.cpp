@@ -1,9 +1,11 @@
-// The elastic backend's `threads` option: any number of workers gives the trajectory of one
+// The elastic backend's `threads` and `balls_per_thread` options: a step takes one worker per
+// `balls_per_thread` balls, up to `threads`; any number of workers gives the trajectory of one
 // worker bit for bit, and a step with workers neither creates threads nor allocates.
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -11,6 +13,7 @@
 #include "backend_state.h"
 #include "elastic/elastic_backend.h"
 #include "elastic/elastic_world.h"
+#include "fooball/presets.h"
 #include "fooball/standard_scenes.h"
 #include "test_scenes.h"
 
@@ -33,11 +36,26 @@ struct Outcome {
   BackendCounters counters;
 };
 
+/// An elastic backend whose every step has `threads` workers, whatever the ball count.
+std::unique_ptr<Backend> backendWithWorkers(int threads) {
+  auto backend = makeElasticBackend();
+  backend->setOption("threads", threads);
+  backend->setOption("balls_per_thread", 0);
+  return backend;
+}
+
+double workersOf(const Backend& backend) {
+  for (const Diagnostic& reading : backend.diagnostics()) {
+    if (reading.name == "workers") return reading.value;
+  }
+  ADD_FAILURE() << "no workers diagnostic";
+  return 0.0;
+}
+
 /// 40 steps of `scene` with `threads` workers and 2 substeps; every third step pushes every
 /// ball.
 Outcome outcomeWith(const Scene& scene, int threads) {
-  auto backend = makeElasticBackend();
-  backend->setOption("threads", threads);
+  auto backend = backendWithWorkers(threads);
   backend->setOption("substeps", 2);
   backend->load(scene);
   const std::vector<Vec2> forces(scene.balls.size(), Vec2{0.3, 0.1});
@@ -125,7 +143,7 @@ TEST(ElasticThreads, MoreWorkersThanCellsGiveTheOneWorkerTrajectoryBitForBit) {
 
 TEST(ElasticThreads, ChangingTheWorkerCountMidRunChangesNothing) {
   const Scene scene = busyScene();
-  auto switching = makeElasticBackend();
+  auto switching = backendWithWorkers(1);
   auto steady = makeElasticBackend();
   switching->load(scene);
   steady->load(scene);
@@ -152,7 +170,7 @@ TEST(ElasticThreads, ReorderingByCellKeepsEveryBallOnce) {
   for (const int threads : {1, 2}) {
     elastic::ElasticWorld world;
     world.setSubsteps(4);  // the backend's default
-    world.setThreads(threads);
+    world.setWorkerPolicy({threads, 0});
     world.load(scene.balls, scene.box, scene.world);
     for (int step = 0; step < 50; ++step)
       world.step(1.0 / 60.0, {});
@@ -173,9 +191,9 @@ TEST(ElasticThreads, StepsWithWorkersDoNotAllocate) {
   const std::pair<Scene, int> cases[] = {
       {busyScene(), 2}, {mixedScene(), 2}, {tinyScene(), kMostThreads}};
   for (const auto& [scene, threads] : cases) {
-    auto backend = makeElasticBackend();
-    backend->setOption("threads", threads);
+    auto backend = backendWithWorkers(threads);
     backend->load(scene);
+    ASSERT_EQ(workersOf(*backend), threads);
     for (int step = 0; step < 30; ++step)
       backend->step(1.0 / 60.0, {});  // warm up: buffers grow to their working size
     const long before = testing::allocationCount();
@@ -184,6 +202,32 @@ TEST(ElasticThreads, StepsWithWorkersDoNotAllocate) {
     EXPECT_EQ(testing::allocationCount() - before, 0)
         << scene.balls.size() << " balls, " << threads << " threads";
   }
+}
+
+TEST(ElasticThreads, TheDefaultSceneStepsOnTheCallingThreadAlone) {
+  // Two threads are what the app gives one run on two cores; 38 balls are far too few to pay
+  // for a barrier wait per phase.
+  auto backend = makeElasticBackend();
+  backend->setOption("threads", 2);
+  backend->load(loadPreset(kDefaultPreset));
+  EXPECT_EQ(workersOf(*backend), 1.0);
+}
+
+TEST(ElasticThreads, EachWorkerNeedsItsShareOfBalls) {
+  auto backend = makeElasticBackend();
+  backend->setOption("threads", 4);
+  backend->setOption("balls_per_thread", 100);
+  const std::pair<std::size_t, double> cases[] = {
+      {0, 1.0}, {199, 1.0}, {200, 2.0}, {399, 3.0}, {1000, 4.0}};
+  for (const auto& [balls, workers] : cases) {
+    backend->load(standardGas(balls, 0.1));
+    EXPECT_EQ(workersOf(*backend), workers) << balls << " balls";
+  }
+  // A changed option applies to the scene already loaded (1000 balls).
+  backend->setOption("balls_per_thread", 500);
+  EXPECT_EQ(workersOf(*backend), 2.0);
+  backend->setOption("balls_per_thread", 0);
+  EXPECT_EQ(workersOf(*backend), 4.0);
 }
 
 TEST(ElasticThreads, MemoryIsReportedPerBall) {

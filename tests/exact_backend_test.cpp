@@ -17,6 +17,7 @@
 #include "exact/barrier_contact.h"
 #include "exact/free_flight.h"
 #include "exact/pair_contact.h"
+#include "fooball/presets.h"
 
 namespace fooball {
 namespace {
@@ -636,6 +637,27 @@ TEST(ExactBackend, DensePackingCompletesWithoutOverlaps) {
   EXPECT_GE(closest, 2.0 * radius - 1e-9);
   EXPECT_GT(backend->counters().ballCollisions, 5'000u);
   EXPECT_EQ(diagnostic(*backend, "cut_short_steps"), 0.0);
+}
+
+/// Two balls and a wall, the heavy one 10⁶ times the light one's mass (the mass-ratio preset's
+/// 100 × 10⁴): 3141 collisions, the first four digits of π (Galperin 2003), all in one 30 s
+/// step — more than six times the 500 events a cap of 1 per ball allows.
+TEST(ExactBackend, EveryStepIsExactUnlessACapIsSet) {
+  Scene scene = loadPreset("mass-ratio");
+  scene.balls[1].mass *= 1e4;
+  auto exact = makeExactBackend();
+  exact->load(scene);
+  exact->step(30.0, {});
+  EXPECT_EQ(exact->counters().ballCollisions + exact->counters().wallCollisions, 3141u);
+  EXPECT_EQ(exact->counters().cutShortSteps, 0u);
+
+  auto capped = makeExactBackend();
+  capped->setOption("max_events_per_ball", 1.0);
+  capped->load(scene);
+  capped->step(30.0, {});
+  EXPECT_LT(capped->counters().ballCollisions + capped->counters().wallCollisions, 3141u);
+  EXPECT_EQ(capped->counters().cutShortSteps, 1u);
+  EXPECT_EQ(diagnostic(*capped, "cut_short_steps"), 1.0);
 }
 
 TEST(ExactBackend, EventCapCutsAStepShortAndSaysSo) {

@@ -9,6 +9,7 @@
 #include "compare_chart.h"
 #include "compare_csv.h"
 #include "compare_summary.h"
+#include "fooball/cut_short_notice.h"
 #include "fooball/run_group.h"
 #include "fooball/run_spec.h"
 #include "number_text.h"
@@ -187,6 +188,10 @@ void compareCommand(const CompareOptions& options, std::ostream& out) {
   }
   progress.clear();
   if (csv) csv->close();
+  for (std::size_t i = 0; i < group.runCount(); ++i) {
+    if (const std::string notice = cutShortNotice(group.run(i).counters()); !notice.empty())
+      std::cerr << "fooball-cli: warning: run " << group.labels()[i] << ": " << notice << '\n';
+  }
 
   CompareSummary summary;
   summary.sceneName = scene.name;

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 
+#include "fooball/cut_short_notice.h"
 #include "fooball/scene_file.h"
 #include "fooball/simulation.h"
 #include "metrics_csv.h"
@@ -118,6 +119,8 @@ void runCommand(const RunOptions& options, std::ostream& out) {
     saveSceneFile(stepsNothing ? scene : simulation.savedScene(options.backendName),
                   *options.savePath);
   }
+  if (const std::string notice = cutShortNotice(simulation.counters()); !notice.empty())
+    std::cerr << "fooball-cli: warning: " << notice << '\n';
   if (options.quiet) return;
 
   summary.wallSeconds = timing.wallSeconds;

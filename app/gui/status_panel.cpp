@@ -4,6 +4,7 @@
 #include <QStatusBar>
 #include <QTimer>
 
+#include "fooball/cut_short_notice.h"
 #include "frame_rate.h"
 #include "run_controller.h"
 
@@ -27,6 +28,10 @@ StatusPanel::StatusPanel(QStatusBar& bar, const RunController& runs, const Frame
   steps_ = addField(tr("Physics steps per second of wall time (per run)"));
   frames_ = addField(tr("Frames drawn per second"));
   stepCost_ = addField(tr("Wall-clock milliseconds one physics step costs, per run"));
+  cutShort_ = addField(QString());
+  cutShort_->setObjectName(QStringLiteral("cutShortNotice"));
+  cutShort_->setStyleSheet(QStringLiteral("color: #ffb347; font-weight: bold"));
+  cutShort_->hide();
   timer_ = new QTimer(this);
   timer_->setInterval(kRefreshMs);
   connect(timer_, &QTimer::timeout, this, &StatusPanel::update);
@@ -57,6 +62,7 @@ void StatusPanel::update() {
                          .arg(stepSeconds, 0, 'f', 1),
                      kNoticeMs);
   }
+  showCutShortSteps();
   runsField_->setText(runs_.labels().join(tr(" vs ")));
   balls_->setText(tr("%L1 balls").arg(runs_.group().ballCount()));
   time_->setText(tr("t = %1 s").arg(runs_.group().time(), 0, 'f', 2));
@@ -64,6 +70,21 @@ void StatusPanel::update() {
   frames_->setText(tr("%1 frames/s").arg(frameRate_.framesPerSecond(), 0, 'f', 0));
   stepCost_->setText(runs_.stepping() ? tr("step: %1 s so far").arg(stepSeconds, 0, 'f', 1)
                                       : tr("%1 ms/step").arg(costs.join(QStringLiteral(" | "))));
+}
+
+void StatusPanel::showCutShortSteps() {
+  QStringList runsCut;
+  QStringList notices;
+  const QStringList labels = runs_.labels();
+  for (int i = 0; i < runs_.runCount(); ++i) {
+    const std::string notice = cutShortNotice(runs_.group().run(std::size_t(i)).counters());
+    if (notice.empty()) continue;
+    runsCut << labels[i];
+    notices << labels[i] + QStringLiteral(": ") + QString::fromStdString(notice);
+  }
+  cutShort_->setVisible(!notices.isEmpty());
+  cutShort_->setText(tr("⚠ steps cut short: %1").arg(runsCut.join(QStringLiteral(", "))));
+  cutShort_->setToolTip(notices.join(QLatin1Char('\n')));
 }
 
 }  // namespace fooball::gui

@@ -13,7 +13,8 @@ class RunController;
 
 /// The status bar's permanent fields: cursor position, runs, balls, simulated time, steps and
 /// frames per second and the cost of a step per run, refreshed four times a second. It also
-/// says how to give up a step that has run in the background for more than a second.
+/// says how to give up a step that has run in the background for more than a second, and warns
+/// while any run has had steps cut short (cutShortNotice).
 class StatusPanel : public QObject {
   Q_OBJECT
 
@@ -27,6 +28,7 @@ class StatusPanel : public QObject {
 
  private:
   QLabel* addField(const QString& toolTip);
+  void showCutShortSteps();
 
   QStatusBar& bar_;
   const RunController& runs_;
@@ -39,6 +41,7 @@ class StatusPanel : public QObject {
   QLabel* steps_;
   QLabel* frames_;
   QLabel* stepCost_;
+  QLabel* cutShort_;
 };
 
 }  // namespace fooball::gui

@@ -26,11 +26,8 @@ void ElasticWorld::setBall(std::size_t slot, const BallDef& ball) {
   layout();
 }
 
-void ElasticWorld::setThreads(int threads) {
-  if (threads == team_->size()) return;
-  team_.reset();  // the old workers stop before the new ones start
-  team_ = std::make_unique<WorkerTeam>(threads);
-  workers_.resize(static_cast<std::size_t>(threads));
+void ElasticWorld::setWorkerPolicy(const WorkerPolicy& policy) {
+  workerPolicy_ = policy;
   layout();
 }
 
@@ -62,6 +59,17 @@ double gridRadius(std::span<const Ball> balls, std::size_t ballsPerOversized) {
 }  // namespace
 
 void ElasticWorld::layout() {
+  const int most = std::max(1, workerPolicy_.maxWorkers);
+  const std::size_t perWorker = workerPolicy_.ballsPerWorker;
+  const int workers = perWorker == 0
+                          ? most
+                          : static_cast<int>(std::clamp<std::size_t>(
+                                balls_.size() / perWorker, 1, static_cast<std::size_t>(most)));
+  if (workers != team_->size()) {
+    team_.reset();  // the old workers stop before the new ones start
+    team_ = std::make_unique<WorkerTeam>(workers);
+    workers_.resize(static_cast<std::size_t>(workers));
+  }
   cells_.layout(balls_.size(), box_.width, box_.height,
                 2.0 * gridRadius(balls_.ball, kBallsPerOversized), team_->size());
   const auto oversized =

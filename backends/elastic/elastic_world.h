@@ -37,8 +37,15 @@ class ElasticWorld {
   void setWorld(const WorldSettings& world) { world_ = world; }
   void setBall(std::size_t slot, const BallDef& ball);
   void setSubsteps(int substeps) { substeps_ = substeps; }
-  /// Starts `threads` workers (the caller counts as one).
-  void setThreads(int threads);
+  /// How many workers share a step: one per `ballsPerWorker` balls, from 1 up to `maxWorkers`
+  /// (the caller counts as one). `ballsPerWorker` 0 means always `maxWorkers`.
+  struct WorkerPolicy {
+    int maxWorkers = 1;
+    std::size_t ballsPerWorker = 0;
+  };
+  void setWorkerPolicy(const WorkerPolicy& policy);
+  /// The workers the policy gives the loaded balls.
+  int workers() const { return team_->size(); }
 
   /// Advances by `dt` seconds; forces as in Backend::step.
   void step(double dt, std::span<const Vec2> forces);
@@ -83,6 +90,7 @@ class ElasticWorld {
     double wallImpulse = 0.0;  ///< N·s
   };
 
+  /// Sizes the grid, bands and tallies for the loaded balls, and the team by the policy.
   void layout();
   void applyKicks(double dt, std::span<const Vec2> forces);
 
@@ -92,6 +100,7 @@ class ElasticWorld {
   CellLists cells_;
   BackendCounters counters_;
   int substeps_ = 1;
+  WorkerPolicy workerPolicy_;
   int substepsSinceReorder_ = 0;
   int rowsPerBand_ = 1;
   std::vector<ChunkTally> chunkTallies_;

@@ -116,8 +116,10 @@ void EventDrivenWorld::rebuild() {
 }
 
 bool EventDrivenWorld::runEvents(double dt) {
-  const double eventCap =
-      limits_.maxEventsPerBall * static_cast<double>(std::max(ballCount(), kEventCapFloorBalls));
+  const double eventCap = limits_.maxEventsPerBall == EventLimits::kNoEventCap
+                              ? std::numeric_limits<double>::infinity()
+                              : limits_.maxEventsPerBall *
+                                    static_cast<double>(std::max(ballCount(), kEventCapFloorBalls));
   const std::uint64_t simultaneousCap =
       kSimultaneousEventsPerBall * ballCount() + kSimultaneousEventsFloor;
   std::uint64_t simultaneous = 0;

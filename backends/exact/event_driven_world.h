@@ -22,8 +22,11 @@ struct EventLimits {
   /// rounding bounces at an unbounded rate.
   double restBounceTime = 1e-6;
   /// Average events per ball in one step (counted as for at least 500 balls) before the step is
-  /// cut short: a pile resting on resting balls under gravity has no finite event sequence.
-  double maxEventsPerBall = 200.0;
+  /// cut short and the rest of it moves without collisions; kNoEventCap (the default) never
+  /// cuts a step short, so every step is exact. A cap bounds the work of a step that holds very
+  /// many events (a pile on a pile under gravity, a huge mass ratio) at the price of the physics.
+  double maxEventsPerBall = kNoEventCap;
+  static constexpr double kNoEventCap = 0.0;
 };
 
 /// What the solver did, beside the backend counters.

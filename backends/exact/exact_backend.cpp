@@ -20,8 +20,9 @@ std::vector<OptionSpec> exactOptionSpecs() {
        "wall (drops at most m(g t/2)^2/2 of energy)",
        defaults.restBounceTime, 0.0, 1.0, false},
       {kMaxEventsPerBall,
-       "events per ball in one step (as for at least 500 balls) before the step is cut short",
-       defaults.maxEventsPerBall, 1.0, 1e9, true},
+       "events per ball in one step (as for at least 500 balls) before the rest of the step moves "
+       "without collisions (0: no cap, every step exact)",
+       defaults.maxEventsPerBall, 0.0, 1e9, true, OptionRole::EventCap},
   };
 }
 
@@ -47,7 +48,11 @@ class ExactBackend final : public Backend {
     }
   }
 
-  BackendCounters counters() const override { return world_.counters(); }
+  BackendCounters counters() const override {
+    BackendCounters counters = world_.counters();
+    counters.cutShortSteps = world_.statistics().cutShortSteps;
+    return counters;
+  }
 
   std::vector<Diagnostic> diagnostics() const override {
     const exact::EventStatistics& statistics = world_.statistics();

@@ -13,7 +13,8 @@ namespace {
 
 BackendCounters operator+(const BackendCounters& a, const BackendCounters& b) {
   return {a.ballCollisions + b.ballCollisions, a.wallCollisions + b.wallCollisions,
-          a.wallImpulse + b.wallImpulse, a.dragLoss + b.dragLoss};
+          a.wallImpulse + b.wallImpulse, a.dragLoss + b.dragLoss,
+          a.cutShortSteps + b.cutShortSteps};
 }
 
 }  // namespace

@@ -119,17 +119,26 @@ void drawBalls(Scene& scene, Draw& draw) {
 /// A third of the time each option keeps its default. Otherwise integer options (substeps,
 /// iterations, threads) go from their minimum up to 15 above it, log-uniform (the minimum about
 /// as often as 8–15 above it), which covers the useful range of counts while bounding the cost;
-/// switches (0/1) are even odds; other options go anywhere in their range.
+/// switches (0/1) are even odds; other options go anywhere in their range. Options of role
+/// OptionRole::BallsPerThread are 0.
 std::vector<std::pair<std::string, double>> drawOptions(Draw& draw,
                                                         std::span<const OptionSpec> specs) {
   std::vector<std::pair<std::string, double>> values;
   for (const OptionSpec& spec : specs) {
-    double value = spec.defaultValue;
-    if (draw.chance(2.0 / 3.0)) {
-      const int span = static_cast<int>(std::min(spec.max - spec.min, 15.0));
-      value = !spec.integer ? draw.uniform(spec.min, spec.max)
-              : span <= 1   ? spec.min + static_cast<double>(draw.integer(0, span))
-                            : spec.min + static_cast<double>(draw.logInteger(0, span));
+    // A case must end: where a backend's default is no cap on a step's work, the case keeps
+    // one, drawn from 1, or kFinishingEventsPerBall (Backend::capEventsToFinish).
+    const bool keepsACap = spec.role == OptionRole::EventCap;
+    const double lowest = keepsACap ? 1.0 : spec.min;
+    double value = keepsACap ? kFinishingEventsPerBall : spec.defaultValue;
+    if (spec.role == OptionRole::BallsPerThread) {
+      // Every drawn thread works: at its default a case of a few hundred balls would always
+      // step on one. Not drawn, so the other draws stay those of the pinned findings.
+      value = 0.0;
+    } else if (draw.chance(2.0 / 3.0)) {
+      const int span = static_cast<int>(std::min(spec.max - lowest, 15.0));
+      value = !spec.integer ? draw.uniform(lowest, spec.max)
+              : span <= 1   ? lowest + static_cast<double>(draw.integer(0, span))
+                            : lowest + static_cast<double>(draw.logInteger(0, span));
     }
     values.emplace_back(spec.name, value);
   }

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <utility>
 
 #include "fooball/simulation.h"
 #include "registry.h"
@@ -15,7 +17,9 @@ double solverStep(const Backend& backend, double dt) {
 }
 
 RunRecord runScene(const Scene& scene, std::string_view backend, double seconds, double dt) {
-  Simulation simulation(scene, createBackend(backend));
+  std::unique_ptr<Backend> stepper = createBackend(backend);
+  stepper->capEventsToFinish();  // every point of a map must end, piles under gravity too
+  Simulation simulation(scene, std::move(stepper));
   simulation.setDt(dt);
   RunRecord record;
   const auto steps = static_cast<long>(std::max(1.0, std::round(seconds / dt)));

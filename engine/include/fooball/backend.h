@@ -20,6 +20,10 @@ struct BackendCounters {
   std::uint64_t wallCollisions = 0;  ///< wall bounces
   double wallImpulse = 0.0;          ///< N·s, Σ|Δp| delivered by the walls
   double dragLoss = 0.0;             ///< J, mechanical energy air resistance has removed (≥ 0)
+  /// Steps the backend ended early, at a work cap the user set (OptionRole::EventCap) or at a
+  /// loop of events at one instant: the rest of each moved without collisions, so the counts
+  /// and the physics of those steps are incomplete.
+  std::uint64_t cutShortSteps = 0;
 };
 
 /// A backend-specific reading reported beside the counters, e.g. Box2D's translation-cap hits
@@ -83,6 +87,13 @@ class Backend {
   void setOptionFromText(std::string_view assignment) {
     options_.setFromText(assignment);
     optionsChanged();
+  }
+  /// For tools that must finish (the failure map, the random suite): an OptionRole::EventCap
+  /// option left at 0, no cap, is set to kFinishingEventsPerBall.
+  void capEventsToFinish() {
+    const OptionSpec* cap = options_.withRole(OptionRole::EventCap);
+    if (cap != nullptr && options_.value(cap->name) == 0.0)
+      setOption(cap->name, kFinishingEventsPerBall);
   }
 
   /// Asks a step running on another thread to end as soon as it can. Thread-safe. Only for a
