@@ -5,11 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <optional>
 #include <sstream>
 #include <stop_token>
+#include <vector>
 
 #include "capacity_search.h"
+#include "step_timing.h"
+#include "test_scenes.h"
 
 namespace fooball::measure {
 namespace {
@@ -181,6 +185,45 @@ TEST(MeasureCapacity, AStopRequestEndsTheRun) {
   const std::vector<CapacityResult> results =
       measureCapacity(registeredBackends(), CapacitySettings{}, {}, stop.get_token());
   EXPECT_TRUE(results.empty());
+}
+
+/// How many steps of `dt` medianStepMs took, read from how far one free ball at 1 m/s moved.
+int stepsTaken(const StepTiming& timing) {
+  Scene scene = testing::emptyBox(1000.0, 9.0);
+  scene.balls = {testing::ball({1.0, 4.5}, {1.0, 0.0})};
+  const auto backend = createBackend("elastic");
+  backend->load(scene);
+  EXPECT_TRUE(medianStepMs(*backend, timing).has_value());
+  std::vector<Vec2> positions(1), velocities(1);
+  backend->readState(positions, velocities);
+  return static_cast<int>(std::lround((positions[0].x - 1.0) / timing.dt));
+}
+
+TEST(StepTiming, RunsTheWarmUpUntimedThenTheTimedSteps) {
+  StepTiming timing;
+  timing.warmUpSteps = 60;
+  timing.timedSteps = 9;
+  EXPECT_EQ(stepsTaken(timing), 69);
+}
+
+TEST(StepTiming, GivesUpAfterSixWarmUpStepsWhenTheyAreOverTheLimit) {
+  StepTiming timing;
+  timing.warmUpSteps = 60;
+  timing.timedSteps = 9;
+  timing.giveUpAboveMs = 0.0;        // every step is over it
+  EXPECT_EQ(stepsTaken(timing), 6);  // the first, which is never judged, then 5
+}
+
+TEST(CapacitySettingsCheck, WarmsUpForWholeStepsCoveringTheWarmUpTime) {
+  CapacitySettings settings;  // 1 s at 1/60 s
+  EXPECT_EQ(stepTimingOf(settings).warmUpSteps, 60);
+  EXPECT_EQ(stepTimingOf(settings).giveUpAboveMs, 10.0 * settings.budgetMs);
+  settings.warmUpSeconds = 0.0;  // still the one step that grows buffers
+  EXPECT_EQ(stepTimingOf(settings).warmUpSteps, 1);
+  settings.warmUpSeconds = -1.0;
+  EXPECT_THROW(checkCapacitySettings(registeredBackends(), settings), std::invalid_argument);
+  settings.warmUpSeconds = std::nan("");
+  EXPECT_THROW(checkCapacitySettings(registeredBackends(), settings), std::invalid_argument);
 }
 
 }  // namespace

@@ -648,5 +648,30 @@ TEST(Simulation, MetricsAgreeWithTheMetricFunctionsAndCounters) {
               1e-12 * initialEnergy);
 }
 
+TEST(Simulation, MetricsWithoutGeometryChecksAreTheSameButForOverlapAndEscaped) {
+  // Balls pass through each other (collisions off), and the top wall is off: ball 0 moves half
+  // inside ball 2 and ball 1 flies out through the top, so both checks have something to find.
+  Scene scene = threeBalls();
+  scene.world.ballCollisions = false;
+  scene.world.walls.top = false;
+  scene.balls[0].position = {11.7, 6.0};              // half inside ball 2 at (12, 6)...
+  scene.balls[0].velocity = scene.balls[2].velocity;  // ...and staying there
+  scene.balls[1].velocity = {0.0, 40.0};
+  Simulation simulation = elasticSimulation(scene);
+  simulation.run(0.5);
+  const Metrics full = simulation.metrics();
+  ASSERT_GT(full.maxOverlap, 0.0);
+  ASSERT_GT(full.escaped, 0u);
+  const Metrics cheap = simulation.metrics(GeometryChecks::Skip);
+  EXPECT_EQ(cheap.maxOverlap, 0.0);
+  EXPECT_EQ(cheap.escaped, 0u);
+  EXPECT_EQ(cheap.time, full.time);
+  EXPECT_EQ(cheap.sums.totalEnergy(), full.sums.totalEnergy());
+  EXPECT_EQ(cheap.sums.momentum, full.sums.momentum);
+  EXPECT_EQ(cheap.ballCollisions, full.ballCollisions);
+  EXPECT_EQ(cheap.wallCollisions, full.wallCollisions);
+  EXPECT_EQ(cheap.energyResidual, full.energyResidual);
+}
+
 }  // namespace
 }  // namespace fooball

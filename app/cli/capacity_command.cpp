@@ -21,6 +21,7 @@ measure::CapacitySettings settingsFrom(const CapacityOptions& options) {
   measure::CapacitySettings settings;
   settings.budgetMs = options.budgetMs;
   settings.packingFraction = options.packingFraction;
+  settings.warmUpSeconds = options.warmUpSeconds;
   settings.timedSteps = options.steps;
   settings.options = options.assignments;
   settings.limits.timeLimitSeconds = options.timeLimitSeconds;
@@ -39,7 +40,8 @@ void printTable(const std::vector<measure::CapacityResult>& results,
   out << "Capacity: the most balls whose median step fits " << readableText(settings.budgetMs, 4)
       << " ms\n(standard gas at packing fraction " << readableText(settings.packingFraction)
       << ", one step = " << readableText(settings.dt, 4) << " s, median of " << settings.timedSteps
-      << " steps after one untimed step; default options";
+      << " steps after " << measure::stepTimingOf(settings).warmUpSteps
+      << " untimed ones to thermalise; default options";
   for (const std::string& option : settings.options)
     out << ", " << option;
   out << ")\n\n";

@@ -14,6 +14,7 @@ struct CapacityOptions {
       backends;  ///< --backend run specs, repeatable; empty: every registered one
   double budgetMs = 1000.0 / 60.0;       ///< --budget-ms
   double packingFraction = 0.2;          ///< --packing-fraction
+  double warmUpSeconds = 1.0;            ///< --warm-up: simulated s untimed before timing
   int steps = 9;                         ///< --steps: timed steps per ball count, median taken
   double timeLimitSeconds = 120.0;       ///< --time-limit, per backend
   std::vector<std::string> assignments;  ///< --option KEY=VALUE, for every backend that has KEY

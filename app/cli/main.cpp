@@ -162,6 +162,12 @@ void addCapacityFlags(CLI::App& capacity, CapacityOptions& options, CapacityFlag
                   "share of the box the standard gas covers")
       ->type_name("PHI")
       ->capture_default_str();
+  capacity
+      .add_option("--warm-up", options.warmUpSeconds,
+                  "simulated seconds each ball count runs untimed first, so the gas is timed "
+                  "thermalised")
+      ->type_name("SECONDS")
+      ->capture_default_str();
   capacity.add_option("--steps", options.steps, "timed steps per ball count (the median counts)")
       ->type_name("K")
       ->capture_default_str();

@@ -72,10 +72,12 @@ BenchmarkDialog::BenchmarkDialog(QWidget* parent) : QDialog(parent) {
   setWindowTitle(tr("Benchmark: capacity"));
 
   auto* intro = new QLabel(
-      tr("The most balls each backend steps within the budget: the standard gas, the median of "
-         "%1 steps per ball count, the same search as <tt>fooball-cli capacity</tt>. "
+      tr("The most balls each backend steps within the budget: the standard gas, run "
+         "untimed for %1 s of simulated time so it has thermalised, then the median of %2 "
+         "steps per ball count, the same search as <tt>fooball-cli capacity</tt>. "
          "<b>The simulation in the main window is paused while the benchmark runs</b> (both "
          "would share the CPU) and continues afterwards.")
+          .arg(measure::CapacitySettings{}.warmUpSeconds)
           .arg(measure::CapacitySettings{}.timedSteps));
   intro->setWordWrap(true);
 

@@ -14,7 +14,7 @@ namespace {
 constexpr int kFrameIntervalMs = 16;      // ~60 frames/s
 constexpr double kMaxFrameSeconds = 0.1;  // a stall longer than this is not caught up
 /// Charts get a sample every few frames: 20 per second at 60 frames/s is smooth, and keeps
-/// the O(N) metrics (overlap search included) off most frames at 100,000 balls.
+/// the O(N) energy and momentum sums off most frames at 100,000 balls.
 constexpr int kFramesPerSample = 3;
 constexpr int kFramesPerReadout = 6;  // compare readout and inspector: 10 per second
 

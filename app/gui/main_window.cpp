@@ -235,11 +235,15 @@ void MainWindow::resetCharts() {
 }
 
 void MainWindow::sampleCharts() {
+  // No chart plots the overlap or the escaped count: the counters table computes them.
   const RunGroup& group = runs_->group();
-  for (std::size_t i = 0; i < group.runCount(); ++i)
-    charts_->addSample(int(i), group.run(i).metrics(), group.divergence(i));
-  if (const Simulation* baseline = group.baseline())
-    charts_->addBaselineSample(baseline->metrics(), *group.baselineDivergence());
+  for (std::size_t i = 0; i < group.runCount(); ++i) {
+    charts_->addSample(int(i), group.run(i).metrics(GeometryChecks::Skip), group.divergence(i));
+  }
+  if (const Simulation* baseline = group.baseline()) {
+    charts_->addBaselineSample(baseline->metrics(GeometryChecks::Skip),
+                               *group.baselineDivergence());
+  }
 }
 
 void MainWindow::markChange(const QString& label, const QString& gesture) {

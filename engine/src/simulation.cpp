@@ -199,7 +199,7 @@ BackendCounters Simulation::counters() const {
   return earlierBackends_ + backendCounters_;
 }
 
-Metrics Simulation::metrics() const {
+Metrics Simulation::metrics(GeometryChecks geometry) const {
   Metrics metrics;
   metrics.time = time();
   metrics.sums = sumState(positions_, velocities_, masses_, world_.gravity);
@@ -207,8 +207,10 @@ Metrics Simulation::metrics() const {
   metrics.ballCollisions = counts.ballCollisions;
   metrics.wallCollisions = counts.wallCollisions;
   metrics.wallImpulse = counts.wallImpulse;
-  metrics.maxOverlap = maxOverlap(positions_, radii_, box_, world_.walls);
-  metrics.escaped = countEscaped(positions_, box_);
+  if (geometry == GeometryChecks::Run) {
+    metrics.maxOverlap = maxOverlap(positions_, radii_, box_, world_.walls);
+    metrics.escaped = countEscaped(positions_, box_);
+  }
   metrics.externalWork = externalWork_;
   metrics.dragLoss = counts.dragLoss;
   metrics.energyResidual =

@@ -1,15 +1,18 @@
 #include "capacity.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 
 #include "fooball/standard_scenes.h"
-#include "step_timing.h"
 
 namespace fooball::measure {
 
 namespace {
+
+/// s: a minute of simulated warm-up is 3'600 steps at 60 Hz, far past any thermalisation.
+constexpr double kMaxWarmUpSeconds = 60.0;
 
 std::string_view optionName(std::string_view assignment) {
   return assignment.substr(0, assignment.find('='));
@@ -58,6 +61,9 @@ void checkCapacitySettings(std::span<const RunSpec> runs, const CapacitySettings
     throw std::invalid_argument("packing fraction: must be in (0, 0.9)");
   }
   if (settings.timedSteps < 1) throw std::invalid_argument("timed steps: must be >= 1");
+  if (!(settings.warmUpSeconds >= 0.0 && settings.warmUpSeconds <= kMaxWarmUpSeconds)) {
+    throw std::invalid_argument("warm-up: must be a number of seconds in [0, 60]");
+  }
   for (const RunSpec& run : runs)
     createBackend(run);  // throws naming the spec
   for (const std::string& assignment : settings.options) {
@@ -79,10 +85,22 @@ void checkCapacitySettings(std::span<const RunSpec> runs, const CapacitySettings
   }
 }
 
+StepTiming stepTimingOf(const CapacitySettings& settings) {
+  StepTiming timing;
+  timing.dt = settings.dt;
+  // − 1e-9: 1 s / (1/60 s) is 60.000000000000004 in doubles, which is 60 steps, not 61.
+  const double warmUpSteps = std::ceil(settings.warmUpSeconds / settings.dt - 1e-9);
+  timing.warmUpSteps = static_cast<int>(std::clamp(warmUpSteps, 1.0, 1e7));
+  timing.timedSteps = settings.timedSteps;
+  timing.giveUpAboveMs = 10.0 * settings.budgetMs;
+  return timing;
+}
+
 std::vector<CapacityResult> measureCapacity(
     std::span<const RunSpec> runs, const CapacitySettings& settings,
     const std::function<void(const CapacityProgress&)>& progress, std::stop_token stop) {
   checkCapacitySettings(runs, settings);
+  const StepTiming timing = stepTimingOf(settings);
   std::vector<CapacityResult> results;
   for (std::size_t index = 0; index < runs.size() && !stop.stop_requested(); ++index) {
     const RunSpec& run = runs[index];
@@ -95,7 +113,7 @@ std::vector<CapacityResult> measureCapacity(
       for (const std::string& assignment : run.assignments)
         backend->setOptionFromText(assignment);
       backend->load(scene);
-      return medianStepMs(*backend, settings.dt, settings.timedSteps, stop);
+      return medianStepMs(*backend, timing, stop);
     };
     const auto report = [&](const SearchProgress& search) {
       if (!progress) return;

@@ -12,16 +12,22 @@
 #include "capacity_search.h"
 #include "fooball/run_spec.h"
 #include "registry.h"
+#include "step_timing.h"
 
 namespace fooball::measure {
 
 /// How `fooball-cli capacity` and Tools → Benchmark measure: the standard gas
 /// (standardGas(N, packingFraction)), one step = one frame of `dt` with the backend's default
-/// options plus `options`, the median of `timedSteps` steps after one untimed step.
+/// options plus `options`, the median of `timedSteps` steps once the gas has run untimed for
+/// `warmUpSeconds`.
 struct CapacitySettings {
   double budgetMs = 1000.0 / 60.0;  ///< ms per step: one 60 Hz frame
   double dt = 1.0 / 60.0;           ///< s
   double packingFraction = 0.2;
+  /// s of simulated time before the timing starts, so every backend is timed in the steady
+  /// state: the lattice start has thermalised (about 5 collisions per ball per second at
+  /// φ = 0.2). 0 still steps once untimed (it grows buffers).
+  double warmUpSeconds = 1.0;
   int timedSteps = 9;
   /// "KEY=VALUE", applied to every measured backend that has the option KEY, e.g. "substeps=1".
   std::vector<std::string> options;
@@ -55,6 +61,10 @@ inline void checkCapacitySettings(std::span<const BackendInfo> backends,
                                   const CapacitySettings& settings) {
   checkCapacitySettings(defaultRuns(backends), settings);
 }
+
+/// How `settings` times one ball count: the warm-up rounded up to whole steps (at least one),
+/// given up at 10× the budget.
+StepTiming stepTimingOf(const CapacitySettings& settings);
 
 /// The capacity of each run in turn, on the calling thread (seconds to minutes: run it off the
 /// GUI thread). A run is a backend with its own options (a run spec, e.g.

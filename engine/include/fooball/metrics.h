@@ -31,6 +31,11 @@ double maxOverlap(std::span<const Vec2> positions, std::span<const double> radii
 /// Balls whose centre is outside the box.
 std::size_t countEscaped(std::span<const Vec2> positions, const Box& box);
 
+/// Whether a metrics sample runs the geometry checks (maxOverlap, countEscaped). They walk every
+/// ball, O(N log N), and no chart plots them, so the app's chart samples skip them and only a
+/// visible counters table pays for them.
+enum class GeometryChecks { Run, Skip };
+
 /// One row of `fooball-cli run --metrics` and of the app's charts.
 struct Metrics {
   double time = 0.0;  ///< s, simulated
@@ -38,8 +43,8 @@ struct Metrics {
   std::uint64_t ballCollisions = 0;
   std::uint64_t wallCollisions = 0;
   double wallImpulse = 0.0;  ///< N·s
-  double maxOverlap = 0.0;   ///< fraction of the smaller radius
-  std::size_t escaped = 0;
+  double maxOverlap = 0.0;   ///< fraction of the smaller radius; 0 with GeometryChecks::Skip
+  std::size_t escaped = 0;   ///< 0 with GeometryChecks::Skip
   /// The energy budget (J): E(t) − E(0) − work by tools and edits + energy taken by drag.
   /// What is left is the method's own error.
   double externalWork = 0.0;
