@@ -419,7 +419,8 @@ constexpr std::array<BackendProfile, 5> kProfiles = {{
         // cases, 3.4e-11 (seed 744, the open box where elastic measures its worst). No overlap
         // beyond rounding (measured 0 between balls, 2.3e-12 of a radius at walls) at any speed,
         // until a step is cut short at the event cap (max_events_per_ball, drawn as low as 1) and
-        // the rest of it advances without collisions (cut_short_steps): 54 of the default cases.
+        // the rest of it advances without collisions (counted in cutShortSteps): 54 of the default
+        // cases.
         .robustness = {.energyWithoutGravity = eitherWay(kClosedFormMargin * 3.39e-11),
                        .energyUnderGravity = eitherWay(kClosedFormMargin * 3.39e-11),
                        .energyUnderGravityWithCollisions = eitherWay(kClosedFormMargin * 3.39e-11),
@@ -430,10 +431,9 @@ constexpr std::array<BackendProfile, 5> kProfiles = {{
                        .ballOverlap = kDoubleOverlapRounding,
                        .ballOverlapWithInteractions = kDoubleOverlapRounding,
                        .wallOverlap = kDoubleOverlapRounding,
-                       .resolvedTravel = std::numeric_limits<double>::infinity(),
-                       .unresolvedSteps = "cut_short_steps"},
+                       .resolvedTravel = std::numeric_limits<double>::infinity()},
         // Events. Piles under strong gravity make event cascades that fill the event cap of
-        // every step (cut_short_steps), and a ball resting on a wall next to a flying one takes
+        // every step (cutShortSteps), and a ball resting on a wall next to a flying one takes
         // an iterative contact search (~30 µs an event): such cases took up to 9 s. 30'000 events
         // are 150 per ball for 200 balls, ~10 ms in a gas and under 1 s at worst; 42 of the
         // default 2'000 cases reach it, most of them cascades, each after dozens of cut-short

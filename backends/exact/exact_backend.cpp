@@ -60,7 +60,6 @@ class ExactBackend final : public Backend {
         {"events", static_cast<double>(statistics.events)},
         {"events_this_step", static_cast<double>(statistics.eventsThisStep)},
         {"collisions_this_step", static_cast<double>(statistics.collisionsThisStep)},
-        {"cut_short_steps", static_cast<double>(statistics.cutShortSteps)},
         {"resting_balls", static_cast<double>(world_.restingBallCount())},
         {"rest_energy_change", statistics.restEnergyChange},
     };

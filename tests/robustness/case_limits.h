@@ -39,12 +39,9 @@ struct Tolerances {
   /// step. At 0.5 two balls close by at most one smallest radius in a substep, so a time-stepped
   /// method finds every contact less than that deep; from 2 to 4 radii per substep it tunnels
   /// (tests/failure_map) and overlaps are as deep as the geometry allows. Infinite for an
-  /// event-driven method.
+  /// event-driven method. Nor do they hold once the method has cut a step short
+  /// (BackendCounters::cutShortSteps), advancing it without resolving every contact by design.
   double resolvedTravel = 0.5;
-  /// A cumulative Backend::diagnostics() entry counting steps the method advanced without
-  /// resolving every contact, by design: the overlap bounds hold until it first counts; "" for
-  /// none.
-  std::string_view unresolvedSteps;
 };
 
 /// The most work a backend may spend on one case. drawCase bounds a case's size, but some

@@ -151,23 +151,21 @@ bool resolved(const Simulation& simulation, double limit) {
 }
 
 /// Counts the steps in which a cumulative diagnostics counter rose (none for the name "").
-class StepCounter {
+/// Whether the run's count of steps cut short (BackendCounters::cutShortSteps: steps the method
+/// advanced without resolving every contact, by design) rose in the step just taken.
+class CutShortSteps {
  public:
-  explicit StepCounter(std::string_view name) : name_(name) {}
-
-  /// Whether the counter rose in the step just taken. A reload (setBall may reload) restarts the
-  /// backend's count, so a lower value is a count afresh.
+  /// A reload (setBall may reload) restarts the backend's count, so a lower value is a count
+  /// afresh.
   bool rose(const Simulation& simulation) {
-    if (name_.empty()) return false;
-    const double value = diagnostic(simulation, name_);
-    const bool rose = value > (value >= last_ ? last_ : 0.0);
+    const std::uint64_t value = simulation.counters().cutShortSteps;
+    const bool rose = value > (value >= last_ ? last_ : 0u);
     last_ = value;
     return rose;
   }
 
  private:
-  std::string_view name_;
-  double last_ = 0.0;
+  std::uint64_t last_ = 0;
 };
 
 std::uint64_t bitsOf(double value) {
@@ -262,7 +260,7 @@ CaseOutcome runCase(const RandomCase& c, const BackendInfo& info, const Toleranc
   outcome.startEnergy = energyAboveBoxMinimum(simulation);
   outcome.energyScale = energyScale(simulation);
   WorkMeter meter(cap, count);
-  StepCounter unresolvedSteps(tolerances.unresolvedSteps);
+  CutShortSteps cutShortSteps;
   bool resolvedSoFar = resolved(simulation, tolerances.resolvedTravel);
   while (outcome.stepsRun < c.steps) {
     const int step = outcome.stepsRun++;
@@ -277,7 +275,7 @@ CaseOutcome runCase(const RandomCase& c, const BackendInfo& info, const Toleranc
       outcome.stepViolation = "at step " + std::to_string(step) + ": " + violation;
       return outcome;
     }
-    resolvedSoFar = resolvedSoFar && !unresolvedSteps.rose(simulation) &&
+    resolvedSoFar = resolvedSoFar && !cutShortSteps.rose(simulation) &&
                     resolved(simulation, tolerances.resolvedTravel);
     if (resolvedSoFar) {
       ++outcome.resolvedSteps;
