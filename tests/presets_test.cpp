@@ -43,6 +43,8 @@ TEST(Presets, EveryPresetLoadsIsValidAndRoundTrips) {
     SCOPED_TRACE(std::string(preset.name));
     EXPECT_FALSE(preset.description.empty());
     EXPECT_EQ(preset.description.find('\n'), std::string_view::npos);
+    EXPECT_FALSE(preset.lookFor.empty());
+    EXPECT_EQ(findPreset(preset.name), &preset);
     const Scene scene = loadPreset(preset.name);
     EXPECT_FALSE(scene.name.empty());
     EXPECT_FALSE(scene.balls.empty());
@@ -54,6 +56,10 @@ TEST(Presets, EveryPresetLoadsIsValidAndRoundTrips) {
 
 TEST(Presets, DefaultPresetExists) {
   EXPECT_NO_THROW(loadPreset(kDefaultPreset));
+}
+
+TEST(Presets, FindPresetReturnsNullForAnUnknownName) {
+  EXPECT_EQ(findPreset("pinball"), nullptr);
 }
 
 TEST(Presets, UnknownNameListsTheKnownOnes) {
@@ -246,9 +252,10 @@ TEST(Presets, DenseIsEqualBallsAtTwoThirdsPacking) {
   EXPECT_EQ(scene.world.gravity, (Vec2{0.0, 0.0}));
 }
 
-TEST(Presets, RainStartsHighInTheBoxUnderGravity) {
+TEST(Presets, RainStartsHighInTheBoxUnderGravityAndAirResistance) {
   const Scene scene = loadPreset("rain");
   EXPECT_LT(scene.world.gravity.y, 0.0);
+  EXPECT_GT(scene.world.airResistance, 0.0);  // what lets the pile settle
   EXPECT_GE(scene.balls.size(), 300u);
   for (const BallDef& ball : scene.balls)
     EXPECT_GT(ball.position.y - ball.radius, 0.5 * scene.box.height);

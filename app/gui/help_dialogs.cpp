@@ -75,6 +75,8 @@ void showMouseAndKeys(QWidget* parent) {
           "<tr><td><b>Ctrl+1 / Ctrl+2</b></td><td>show or hide the settings / charts</td></tr>"
           "<tr><td><b>Ctrl+T, Ctrl+L, Ctrl+Shift+V, Ctrl+M</b></td><td>temperature colouring, "
           "tethers, velocity vectors, centre of mass</td></tr>"
+          "<tr><td><b>Ctrl+Shift+L</b></td><td>show or hide the preset's “what to look "
+          "for” caption</td></tr>"
           "<tr><td><b>Ctrl+Shift+B</b></td><td>compare runs side by side</td></tr>"
           "</table>"));
 }

@@ -15,6 +15,7 @@
 #include "ball_inspector.h"
 #include "charts/chart_panel.h"
 #include "compare_readout.h"
+#include "fooball/presets.h"
 #include "frame_loop.h"
 #include "run_controller.h"
 #include "run_counters.h"
@@ -87,6 +88,7 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
     runs_->changeTools([&](RunGroup& group) { group.addAttractor(point); });
   actions_->applyShowOptions(options.show);
 
+  view_->setPreset(findPreset(presetName_.toStdString()));
   syncSidebar();
   resetCharts();
   updateTitle();
@@ -267,6 +269,7 @@ void MainWindow::loadScene(const Scene& scene, const QString& presetName,
   presetName_ = presetName;
   sourceName_ = sourceName;
   runs_->loadScene(scene);
+  view_->setPreset(findPreset(presetName_.toStdString()));
   syncSidebar();
   resetCharts();
   updateTitle();

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <QLocale>
 #include <QString>
 #include <cmath>
+#include <cstdint>
 
 namespace fooball::gui {
 
@@ -14,6 +16,12 @@ inline QString formatNumber(double value) {
   if (magnitude >= 10.0) return QString::number(value, 'f', 1);
   if (magnitude >= 1.0) return QString::number(value, 'f', 2);
   return QString::number(value, 'g', 3);
+}
+
+/// A counter as the user's locale writes whole numbers: "2,515" (the Counters table and the
+/// view's collision count say the same).
+inline QString formatCount(std::uint64_t count) {
+  return QLocale().toString(qulonglong(count));
 }
 
 }  // namespace fooball::gui

@@ -5,6 +5,7 @@
 #include <QLocale>
 
 #include "charts/chart_panel.h"
+#include "number_format.h"
 
 namespace fooball::gui {
 
@@ -77,7 +78,6 @@ void RunCounters::showRuns(const QStringList& labels) {
 }
 
 void RunCounters::showMetrics(const std::vector<Metrics>& metrics) {
-  const QLocale locale;
   for (std::size_t run = 0; run < rows_.size(); ++run) {
     Row& row = rows_[run];
     if (run >= metrics.size()) {
@@ -86,10 +86,10 @@ void RunCounters::showMetrics(const std::vector<Metrics>& metrics) {
       continue;
     }
     const Metrics& m = metrics[run];
-    row.ballCollisions->setText(locale.toString(qulonglong(m.ballCollisions)));
-    row.wallCollisions->setText(locale.toString(qulonglong(m.wallCollisions)));
+    row.ballCollisions->setText(formatCount(m.ballCollisions));
+    row.wallCollisions->setText(formatCount(m.wallCollisions));
     row.overlap->setText(overlapText(m.maxOverlap));
-    row.escaped->setText(locale.toString(qulonglong(m.escaped)));
+    row.escaped->setText(formatCount(m.escaped));
   }
 }
 

@@ -167,12 +167,29 @@ QGroupBox* SettingsSidebar::createCollisionsGroup() {
   ballCollisions_->setToolTip(
       tr("Off: balls pass through each other (and cost no collision work)"));
   connect(ballCollisions_, &QCheckBox::toggled, this, &SettingsSidebar::ballCollisionsToggled);
-  walls_ = new QCheckBox(tr("Walls"));
-  walls_->setObjectName(QStringLiteral("wallsBox"));
-  walls_->setToolTip(tr("Off: balls leave the box and are gone from view (dashed edges)"));
-  connect(walls_, &QCheckBox::toggled, this, &SettingsSidebar::wallsToggled);
   layout->addWidget(ballCollisions_);
-  layout->addWidget(walls_);
+
+  auto* wallsLabel = new QLabel(tr("Walls:"));
+  wallsLabel->setToolTip(tr("A wall that is off lets balls leave the box (dashed edge)"));
+  layout->addWidget(wallsLabel);
+  auto* walls = new QGridLayout;
+  const auto addWall = [&](QCheckBox*& box, const QString& text, const QString& name, int row,
+                           int column) {
+    box = new QCheckBox(text);
+    box->setObjectName(name);
+    box->setToolTip(tr("Off: balls leave the box through the %1 wall and are gone from view")
+                        .arg(text.toLower()));
+    connect(box, &QCheckBox::toggled, this, [this] {
+      emit wallsChosen(Walls{leftWall_->isChecked(), rightWall_->isChecked(),
+                             bottomWall_->isChecked(), topWall_->isChecked()});
+    });
+    walls->addWidget(box, row, column);
+  };
+  addWall(leftWall_, tr("Left"), QStringLiteral("leftWallBox"), 0, 0);
+  addWall(rightWall_, tr("Right"), QStringLiteral("rightWallBox"), 0, 1);
+  addWall(bottomWall_, tr("Bottom"), QStringLiteral("bottomWallBox"), 1, 0);
+  addWall(topWall_, tr("Top"), QStringLiteral("topWallBox"), 1, 1);
+  layout->addLayout(walls);
   return group;
 }
 
@@ -273,8 +290,12 @@ void SettingsSidebar::showWorld(const WorldSettings& world) {
   airResistance_->setValue(world.airResistance);
   const QSignalBlocker collisionsBlocker(ballCollisions_);
   ballCollisions_->setChecked(world.ballCollisions);
-  const QSignalBlocker wallsBlocker(walls_);
-  walls_->setChecked(world.walls.allOn());
+  for (auto [box, on] :
+       {std::pair{leftWall_, world.walls.left}, std::pair{rightWall_, world.walls.right},
+        std::pair{bottomWall_, world.walls.bottom}, std::pair{topWall_, world.walls.top}}) {
+    const QSignalBlocker blocker(box);
+    box->setChecked(on);
+  }
 }
 
 void SettingsSidebar::showStrength(double strength) {

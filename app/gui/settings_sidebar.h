@@ -71,7 +71,8 @@ class SettingsSidebar : public QWidget {
   void timeScaleChosen(double timeScale);        ///< simulated seconds per real second
   void resetSlidersRequested();
   void ballCollisionsToggled(bool on);
-  void wallsToggled(bool on);
+  /// One wall's box was toggled: `walls` is every wall as the boxes show them now.
+  void wallsChosen(const Walls& walls);
 
   void mouseModeChosen(MouseMode mode);
   void scopeChosen(Scope scope);
@@ -98,7 +99,11 @@ class SettingsSidebar : public QWidget {
   LogSlider* strength_;
   LogSlider* timeScale_;
   QCheckBox* ballCollisions_;
-  QCheckBox* walls_;
+  /// One box per wall, so a box of three walls (mass-ratio) reads as it is.
+  QCheckBox* leftWall_;
+  QCheckBox* rightWall_;
+  QCheckBox* bottomWall_;
+  QCheckBox* topWall_;
   QButtonGroup* mouseMode_;
   QButtonGroup* scope_;
   QPushButton* clearAttractors_;

@@ -1,5 +1,6 @@
 #include "sidebar_wiring.h"
 
+#include <QStringList>
 #include <stdexcept>
 
 #include "ball_inspector.h"
@@ -33,6 +34,21 @@ QString modeName(MouseMode mode) {
       return QObject::tr("slingshot");
   }
   return {};
+}
+
+/// The chart marker for a change of walls: "left wall off", "top wall on".
+QString wallsChangeLabel(const Walls& before, const Walls& after) {
+  QStringList changes;
+  const auto add = [&](bool was, bool is, const QString& wall) {
+    if (was != is)
+      changes.append(is ? QObject::tr("%1 wall on").arg(wall)
+                        : QObject::tr("%1 wall off").arg(wall));
+  };
+  add(before.left, after.left, QObject::tr("left"));
+  add(before.right, after.right, QObject::tr("right"));
+  add(before.bottom, after.bottom, QObject::tr("bottom"));
+  add(before.top, after.top, QObject::tr("top"));
+  return changes.join(QStringLiteral(", "));
 }
 
 /// Changes the world settings of every run; `edit` adjusts a copy of today's.
@@ -190,9 +206,10 @@ void wireSidebar(MainWindow& window) {
     changeWorld(*w, [&](WorldSettings& world) { world.ballCollisions = on; });
     w->markChange(on ? QObject::tr("collisions on") : QObject::tr("collisions off"));
   });
-  QObject::connect(s, &SettingsSidebar::wallsToggled, w, [w](bool on) {
-    changeWorld(*w, [&](WorldSettings& world) { world.walls = Walls{on, on, on, on}; });
-    w->markChange(on ? QObject::tr("walls on") : QObject::tr("walls off"));
+  QObject::connect(s, &SettingsSidebar::wallsChosen, w, [w](const Walls& walls) {
+    const QString label = wallsChangeLabel(w->runs().group().world().walls, walls);
+    changeWorld(*w, [&](WorldSettings& world) { world.walls = walls; });
+    w->markChange(label);
     w->view()->update();
   });
 

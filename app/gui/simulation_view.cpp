@@ -8,8 +8,11 @@
 
 #include "charts/chart_panel.h"
 #include "disc_rasterizer.h"
+#include "fooball/presets.h"
 #include "fooball/simulation.h"
+#include "number_format.h"
 #include "run_controller.h"
+#include "view_text.h"
 
 namespace fooball::gui {
 
@@ -25,8 +28,14 @@ constexpr QRgb kWallColour = 0xff6b7385;       // walls that are on; dashed when
 constexpr QRgb kVectorColour = 0xff9be564;     // velocity vectors
 constexpr QRgb kAttractorColour = 0xffffd166;  // permanent attractors and the slingshot band
 constexpr double kVectorSeconds = 0.25;        // a velocity vector shows 0.25 s of travel
-constexpr double kPickSlack = 4.0;             // px beyond a ball's edge that still picks it
-constexpr double kMinOutlineRadius = 2.5;      // px: smaller compare-run balls are dots
+/// Arrowheads: a third of the vector, between these lengths (px), so they read on long vectors
+/// without swamping a slow or small ball; none on vectors too short to point anywhere.
+constexpr double kArrowheadMin = 3.0;
+constexpr double kArrowheadMax = 9.0;
+constexpr double kArrowheadHalfAngle = 0.45;  // rad, about 26°
+constexpr int kAccentWidth = 10;              // px: the bar left of the preset's caption
+constexpr double kPickSlack = 4.0;            // px beyond a ball's edge that still picks it
+constexpr double kMinOutlineRadius = 2.5;     // px: smaller compare-run balls are dots
 /// Above this many lines, antialiasing costs more than it shows.
 constexpr std::size_t kAntialiasedLineLimit = 2000;
 /// Tethers take their ball's colour (as in the original FooBall) up to this many balls.
@@ -55,6 +64,11 @@ QColor toolColour(MouseMode mode) {
       return QColor::fromRgb(kAttractorColour);
   }
   return Qt::white;
+}
+
+/// The preset caption's close button: a square at its top-right corner, one line tall.
+QRect closeButtonOf(const QRect& caption, int size) {
+  return QRect(caption.right() + 1 - size, caption.top(), size, size);
 }
 
 void drawPill(QPainter& painter, const QRectF& rect) {
@@ -105,6 +119,32 @@ void SimulationView::setCompareLayout(CompareLayout layout) {
   update();
 }
 
+void SimulationView::setLookForShown(bool on) {
+  lookForShown_ = on;
+  update();
+}
+
+void SimulationView::setPreset(const Preset* preset) {
+  lookFor_ = preset ? fromView(preset->lookFor) : QString();
+  countsCollisions_ = preset && preset->countsCollisions;
+  update();
+}
+
+QString SimulationView::collisionsText(int runIndex) const {
+  const BackendCounters counters = runs_.run(runIndex).counters();
+  return tr("%1 ball–ball + %2 wall = %3 collisions")
+      .arg(formatCount(counters.ballCollisions), formatCount(counters.wallCollisions),
+           formatCount(counters.ballCollisions + counters.wallCollisions));
+}
+
+QRect SimulationView::lookForCloseButton() const {
+  for (const Caption& caption : captions()) {
+    if (caption.kind == Caption::Kind::LookFor)
+      return closeButtonOf(caption.rect, QFontMetrics(font()).height() + 2 * kPillPadding);
+  }
+  return {};
+}
+
 SimulationView::Layout SimulationView::layout() const {
   // The captions go in rows above the boxes, never on them: a legend or a hint on top of the
   // balls hides what they show. The Paused hint's room is kept while running too, so pausing
@@ -118,20 +158,38 @@ SimulationView::Layout SimulationView::layout() const {
   const int runs = runs_.runCount();
   const bool overlay = runs == 1 || compareLayout_ == CompareLayout::Overlay;
   Layout result;
+  std::vector<QSize> leading;
+  // The preset's caption first, as wide as the view so that it has a row of its own, its text
+  // wrapped beside an accent bar and the close button.
+  if (lookForShown_ && !lookFor_.isEmpty()) {
+    const int rowWidth = std::max(width() - 2 * kCaptionGap, 1);
+    const int textWidth = std::max(rowWidth - 2 * kPillPadding - kAccentWidth - pillHeight, 1);
+    const QRect text =
+        metrics.boundingRect(QRect(0, 0, textWidth, QWIDGETSIZE_MAX), Qt::TextWordWrap, lookFor_);
+    result.captions.push_back({Caption::Kind::LookFor, 0, lookFor_, {}});
+    leading.emplace_back(rowWidth, std::max(text.height() + 2 * kPillPadding, pillHeight));
+  }
+  // A count the caption promises, per run; sized for three-digit counts, so the pills do not
+  // grow (and move the box) as the count climbs.
+  for (int runIndex = 0; countsCollisions_ && runIndex < runs; ++runIndex) {
+    const QString text = collisionsText(runIndex);
+    const int swatch = runs > 1 ? kSwatchWidth : 0;
+    const QSize room = pillSize(tr("%1 ball–ball + %1 wall = %1 collisions").arg(999), swatch);
+    result.captions.push_back({Caption::Kind::Collisions, runIndex, text, {}});
+    leading.push_back(room.expandedTo(pillSize(text, swatch)));
+  }
   // The legends from the left (the runs' colours, then the speed scale), the hint on the right.
   if (runs > 1 && overlay) {
     // The swatch says filled (run 0) or outlined (the others), as the balls are drawn.
-    for (int runIndex = 0; runIndex < runs; ++runIndex)
+    for (int runIndex = 0; runIndex < runs; ++runIndex) {
       result.captions.push_back({Caption::Kind::RunEntry, runIndex, runs_.label(runIndex), {}});
+      leading.push_back(pillSize(runs_.label(runIndex), kSwatchWidth));
+    }
   }
   if (temperature_) {
-    result.captions.push_back(
-        {Caption::Kind::Temperature, 0, tr("speed 0 … %1 m/s").arg(topSpeed_, 0, 'g', 3), {}});
-  }
-  std::vector<QSize> leading;
-  for (const Caption& caption : result.captions) {
-    const bool scale = caption.kind == Caption::Kind::Temperature;
-    leading.push_back(pillSize(caption.text, scale ? kTemperatureBarWidth : kSwatchWidth));
+    const QString text = tr("speed 0 … %1 m/s").arg(topSpeed_, 0, 'g', 3);
+    result.captions.push_back({Caption::Kind::Temperature, 0, text, {}});
+    leading.push_back(pillSize(text, kTemperatureBarWidth));
   }
   Caption paused{Caption::Kind::Paused, 0, pausedText(), {}};
   const CaptionRows rows =
@@ -333,9 +391,22 @@ void SimulationView::paintVelocityVectors(QPainter& painter, const Panel& panel,
   const auto positions = run.positions();
   const auto velocities = run.velocities();
   lines_.clear();
+  const double cosine = std::cos(kArrowheadHalfAngle);
+  const double sine = std::sin(kArrowheadHalfAngle);
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    lines_.emplace_back(panel.transform.toPixels(positions[i]),
-                        panel.transform.toPixels(positions[i] + kVectorSeconds * velocities[i]));
+    const QPointF tail = panel.transform.toPixels(positions[i]);
+    const QPointF tip = panel.transform.toPixels(positions[i] + kVectorSeconds * velocities[i]);
+    lines_.emplace_back(tail, tip);
+    // The head's two barbs: the shaft's direction turned back by ± the half angle.
+    const QPointF shaft = tip - tail;
+    const double length = std::hypot(shaft.x(), shaft.y());
+    if (length < kArrowheadMin) continue;
+    const double head = std::clamp(length / 3.0, kArrowheadMin, kArrowheadMax);
+    const QPointF back = -shaft * (head / length);
+    lines_.emplace_back(tip, tip + QPointF(back.x() * cosine - back.y() * sine,
+                                           back.x() * sine + back.y() * cosine));
+    lines_.emplace_back(tip, tip + QPointF(back.x() * cosine + back.y() * sine,
+                                           -back.x() * sine + back.y() * cosine));
   }
   painter.setRenderHint(QPainter::Antialiasing, lines_.size() <= kAntialiasedLineLimit);
   painter.setPen(QPen(QColor(0x9b, 0xe5, 0x64, 210), 1.2));
@@ -487,6 +558,39 @@ void SimulationView::paintCaptions(QPainter& painter, const std::vector<Caption>
         painter.drawRoundedRect(bar, 3.0, 3.0);
         break;
       }
+      case Caption::Kind::LookFor: {
+        // An accent bar, the text wrapped beside it, and the close button's cross.
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor::fromRgb(kAttractorColour));
+        painter.drawRoundedRect(QRectF(inner.left() + 1.0, pill.top() + kPillPadding + 1.0, 3.0,
+                                       pill.height() - 2.0 * kPillPadding - 2.0),
+                                1.5, 1.5);
+        const QRectF close = closeButtonOf(caption.rect, metrics.height() + 2 * kPillPadding);
+        painter.setPen(QColor(0xe8, 0xea, 0xf0));
+        painter.drawText(inner.adjusted(kAccentWidth, kPillPadding, -close.width(), -kPillPadding),
+                         Qt::AlignVCenter | Qt::AlignLeft | Qt::TextWordWrap, caption.text);
+        const double arm = 0.18 * close.height();
+        painter.setPen(QPen(QColor(0xb0, 0xb6, 0xc4), 1.6, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(close.center() + QPointF(-arm, -arm), close.center() + QPointF(arm, arm));
+        painter.drawLine(close.center() + QPointF(-arm, arm), close.center() + QPointF(arm, -arm));
+        break;
+      }
+      case Caption::Kind::Collisions: {
+        QRectF text = inner;
+        if (runs_.runCount() > 1) {
+          // The run's colour, filled or outlined as its balls are drawn.
+          const QColor colour = ChartPanel::runColour(caption.runIndex);
+          const QPointF swatch(inner.left() + kSwatchWidth / 2.0 - 3.0, pill.center().y());
+          painter.setPen(caption.runIndex > 0 ? QPen(colour, 2.0) : QPen(Qt::NoPen));
+          painter.setBrush(caption.runIndex > 0 ? QBrush(Qt::NoBrush) : QBrush(colour));
+          painter.drawEllipse(swatch, 5.5, 5.5);
+          text.adjust(kSwatchWidth, 0, 0, 0);
+        }
+        painter.setPen(QColor::fromRgb(kAttractorColour));
+        painter.drawText(text, Qt::AlignVCenter | Qt::AlignLeft,
+                         metrics.elidedText(caption.text, Qt::ElideRight, int(text.width())));
+        break;
+      }
       case Caption::Kind::Paused:
         painter.setPen(QColor(0xff, 0xd1, 0x66));
         painter.drawText(pill, Qt::AlignCenter,
@@ -497,6 +601,11 @@ void SimulationView::paintCaptions(QPainter& painter, const std::vector<Caption>
 }
 
 void SimulationView::mousePressEvent(QMouseEvent* event) {
+  if (event->button() == Qt::LeftButton &&
+      lookForCloseButton().contains(event->position().toPoint())) {
+    emit lookForClosed();
+    return;
+  }
   const Vec2 point = toMetres(event->position());
   if (event->button() == Qt::RightButton) {
     emit attractorPlaced(point);

@@ -14,7 +14,8 @@
 
 namespace fooball {
 class Simulation;
-}
+struct Preset;
+}  // namespace fooball
 
 namespace fooball::gui {
 
@@ -49,6 +50,8 @@ class SimulationView : public QWidget {
       TileLabel,    ///< side by side: the run a box shows
       Temperature,  ///< the speed colour scale
       Paused,       ///< what a click does while paused
+      LookFor,      ///< the preset's "what to look for", wrapped, with a close button
+      Collisions,   ///< a run's collision count, for a preset whose promise is a count
     };
     Kind kind;
     int runIndex = 0;
@@ -63,6 +66,13 @@ class SimulationView : public QWidget {
   bool velocityVectors() const { return velocityVectors_; }
   bool centreOfMass() const { return centreOfMass_; }
   CompareLayout compareLayout() const { return compareLayout_; }
+  bool lookForShown() const { return lookForShown_; }
+
+  /// The loaded preset, whose "what to look for" caption (and, when its promise is a count, each
+  /// run's collisions) the view shows above the box; nullptr for a scene from a file.
+  void setPreset(const Preset* preset);
+  /// The caption's close button, in widget px (empty while no caption is shown).
+  QRect lookForCloseButton() const;
 
  public slots:
   void setTemperatureColouring(bool on);
@@ -70,8 +80,12 @@ class SimulationView : public QWidget {
   void setVelocityVectors(bool on);
   void setCentreOfMass(bool on);
   void setCompareLayout(CompareLayout layout);
+  /// Shows or hides the preset's caption (View → What to look for).
+  void setLookForShown(bool on);
 
  signals:
+  /// The caption's close button was clicked.
+  void lookForClosed();
   /// Left button while running: the mouse tool (positions in m).
   void toolPressed(Vec2 point);
   void toolMoved(Vec2 point);
@@ -102,6 +116,8 @@ class SimulationView : public QWidget {
   Layout layout() const;
   std::vector<Panel> panels() const;
   QString pausedText() const;
+  /// "16 ball–ball + 15 wall = 31 collisions", from run `runIndex`'s own counters.
+  QString collisionsText(int runIndex) const;
   const Panel* panelAt(QPointF position, const std::vector<Panel>& panels) const;
   Vec2 toMetres(QPointF position) const;
   std::optional<std::size_t> ballAt(QPointF position) const;
@@ -122,6 +138,9 @@ class SimulationView : public QWidget {
   bool centreOfMass_ = false;
   CompareLayout compareLayout_ = CompareLayout::Overlay;
   bool toolHeld_ = false;
+  QString lookFor_;                ///< the preset's caption; empty for a scene file
+  bool countsCollisions_ = false;  ///< the preset's promise is a count of collisions
+  bool lookForShown_ = true;
 
   TemperaturePalette palette_;
   double topSpeed_ = 0.0;  ///< m/s at the hot end of the temperature scale, smoothed over frames

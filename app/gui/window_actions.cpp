@@ -77,6 +77,14 @@ void WindowActions::createActions() {
                                 &SimulationView::setCentreOfMass);
   tethers_->setChecked(true);
 
+  lookFor_ = new QAction(tr("What to &look for"), this);
+  lookFor_->setCheckable(true);
+  lookFor_->setChecked(view->lookForShown());
+  lookFor_->setShortcut(QKeySequence(tr("Ctrl+Shift+L")));
+  lookFor_->setToolTip(tr("The preset's caption above the box: what to watch and what it proves"));
+  connect(lookFor_, &QAction::toggled, view, &SimulationView::setLookForShown);
+  connect(view, &SimulationView::lookForClosed, lookFor_, [this] { lookFor_->setChecked(false); });
+
   auto* layoutGroup = new QActionGroup(this);
   overlay_ = new QAction(tr("Compare: &overlay"), layoutGroup);
   sideBySide_ = new QAction(tr("Compare: side &by side"), layoutGroup);
@@ -133,6 +141,7 @@ void WindowActions::createMenus() {
   resetLayout->setToolTip(tr("Put the settings and charts back where they were at first start"));
   viewMenu->addSeparator();
   viewMenu->addActions({temperature_, tethers_, velocityVectors_, centreOfMass_});
+  viewMenu->addAction(lookFor_);
   viewMenu->addSeparator();
   viewMenu->addActions({overlay_, sideBySide_});
 

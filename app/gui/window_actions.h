@@ -26,6 +26,8 @@ class WindowActions : public QObject {
   QAction* tethers() const { return tethers_; }
   QAction* velocityVectors() const { return velocityVectors_; }
   QAction* centreOfMass() const { return centreOfMass_; }
+  /// View → What to look for: the preset's caption above the box (its close button unchecks it).
+  QAction* lookFor() const { return lookFor_; }
   QAction* overlay() const { return overlay_; }
   QAction* sideBySide() const { return sideBySide_; }
   QAction* benchmark() const { return benchmark_; }
@@ -63,6 +65,7 @@ class WindowActions : public QObject {
   QAction* tethers_ = nullptr;
   QAction* velocityVectors_ = nullptr;
   QAction* centreOfMass_ = nullptr;
+  QAction* lookFor_ = nullptr;
   QAction* overlay_ = nullptr;
   QAction* sideBySide_ = nullptr;
   QAction* benchmark_ = nullptr;

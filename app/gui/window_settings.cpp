@@ -45,6 +45,7 @@ bool readWindowSettings(MainWindow& window) {
   actions.tethers()->setChecked(settings.value("drawing/tethers", true).toBool());
   actions.velocityVectors()->setChecked(settings.value("drawing/velocityVectors", false).toBool());
   actions.centreOfMass()->setChecked(settings.value("drawing/centreOfMass", false).toBool());
+  actions.lookFor()->setChecked(settings.value("drawing/lookFor", true).toBool());
   const bool sideBySide = settings.value("drawing/sideBySide", false).toBool();
   (sideBySide ? actions.sideBySide() : actions.overlay())->trigger();
   const auto mode = static_cast<MouseMode>(
@@ -74,6 +75,7 @@ void writeWindowSettings(const MainWindow& window) {
   settings.setValue("drawing/tethers", view.tethers());
   settings.setValue("drawing/velocityVectors", view.velocityVectors());
   settings.setValue("drawing/centreOfMass", view.centreOfMass());
+  settings.setValue("drawing/lookFor", view.lookForShown());
   settings.setValue("drawing/sideBySide", view.compareLayout() == CompareLayout::SideBySide);
   settings.setValue("mouse/mode", int(group.interactions().mode));
   settings.setValue("mouse/scope", int(group.interactions().scope));

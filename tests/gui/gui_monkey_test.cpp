@@ -197,7 +197,9 @@ class GuiMonkey : public GuiTest {
         return "preset " + presets->currentText().toStdString();
       }
       case 9: {
-        auto* box = named<QCheckBox>(chance(0.5) ? "wallsBox" : "ballCollisionsBox");
+        static const char* const kBoxes[] = {"ballCollisionsBox", "leftWallBox", "rightWallBox",
+                                             "bottomWallBox", "topWallBox"};
+        auto* box = named<QCheckBox>(kBoxes[uniform(0, 4)]);
         box->click();
         return box->objectName().toStdString() + (box->isChecked() ? " on" : " off");
       }

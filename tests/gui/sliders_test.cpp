@@ -115,9 +115,10 @@ TEST_F(Sliders, CollisionAndWallBoxesSetTheWorld) {
   open(stillBalls());
   window->sidebar()->findChild<QCheckBox*>(QStringLiteral("ballCollisionsBox"))->click();
   EXPECT_FALSE(group().world().ballCollisions);
-  window->sidebar()->findChild<QCheckBox*>(QStringLiteral("wallsBox"))->click();
-  EXPECT_FALSE(group().world().walls.left);
-  EXPECT_FALSE(group().world().walls.top);
+  window->sidebar()->findChild<QCheckBox*>(QStringLiteral("leftWallBox"))->click();
+  EXPECT_EQ(group().world().walls, (Walls{false, true, true, true}));
+  window->sidebar()->findChild<QCheckBox*>(QStringLiteral("topWallBox"))->click();
+  EXPECT_EQ(group().world().walls, (Walls{false, true, true, false}));
 }
 
 TEST_F(Sliders, ExtremeSettingsKeepEveryBall) {
