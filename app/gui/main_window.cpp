@@ -8,6 +8,7 @@
 #include <QScrollBar>
 #include <QShowEvent>
 #include <QStatusBar>
+#include <QUndoStack>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "charts/chart_panel.h"
 #include "compare_readout.h"
 #include "frame_loop.h"
+#include "number_field_keys.h"
 #include "run_controller.h"
 #include "run_counters.h"
 #include "run_list_editor.h"
@@ -71,8 +73,10 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
 
   createDocks();
   defaultLayout_ = saveState();
+  undoStack_ = new QUndoStack(this);
   frames_ = new FrameLoop(*this);
   actions_ = new WindowActions(*this);
+  new NumberFieldKeys(*this, *view_);  // Space and '.' reach the actions from a number field
   status_ = new StatusPanel(*statusBar(), *runs_, frames_->frameRate());
   wireSidebar(*this);
   wireView(*this);
@@ -267,6 +271,7 @@ void MainWindow::loadScene(const Scene& scene, const QString& presetName,
   presetName_ = presetName;
   sourceName_ = sourceName;
   runs_->loadScene(scene);
+  undoStack_->clear();  // other balls (undoStack())
   syncSidebar();
   resetCharts();
   updateTitle();
@@ -274,11 +279,13 @@ void MainWindow::loadScene(const Scene& scene, const QString& presetName,
 
 void MainWindow::restart() {
   runs_->restart();
+  undoStack_->clear();  // the balls as loaded (undoStack())
   resetCharts();
 }
 
 void MainWindow::resetScene() {
   runs_->loadScene(runs_->group().loadedScene());
+  undoStack_->clear();  // the balls as loaded (undoStack())
   resetSliders(*this);
   syncSidebar();
   resetCharts();
