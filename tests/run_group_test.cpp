@@ -297,6 +297,117 @@ TEST(RunGroup, ASetBallThatFailsInOneRunChangesNoRun) {
   }
 }
 
+TEST(RunGroup, EditBallScalesTheMassWithTheAreaUntilTheMassIsChosen) {
+  RunGroup group = groupOf(threeBalls(), {"elastic", "exact"});
+  const double mass = group.ball(0).mass;
+  BallDef bigger = group.ball(0);
+  bigger.radius = 1.0;  // from 0.5: twice the radius, four times the area
+  EXPECT_EQ(group.editBall(0, bigger).mass, 4.0 * mass);
+  for (const Simulation* simulation : everySimulation(group))
+    EXPECT_EQ(simulation->masses()[0], 4.0 * mass);
+  EXPECT_FALSE(group.massChosen(0));
+
+  BallDef heavier = group.ball(0);
+  heavier.mass = 2.5;
+  group.editBall(0, heavier);
+  EXPECT_TRUE(group.massChosen(0));
+  BallDef smaller = group.ball(0);
+  smaller.radius = 0.25;
+  EXPECT_EQ(group.editBall(0, smaller).mass, 2.5) << "a chosen mass stays";
+  EXPECT_EQ(group.run(1).masses()[0], 2.5);
+
+  // The fact follows the ball: ball 0 deleted, the ball that was 1 is 0 and its mass follows
+  // its radius; the deleted ball comes back with its chosen mass.
+  const BallStates deleted = group.ballStates(0);
+  group.deleteBall(0);
+  EXPECT_FALSE(group.massChosen(0));
+  group.restoreBall(0, deleted, BallPlacement::Insert);
+  EXPECT_TRUE(group.massChosen(0));
+  EXPECT_FALSE(group.massChosen(1));
+}
+
+/// Every simulation's balls, time and counters, for bit-exact comparison.
+struct GroupState {
+  std::vector<Scene> scenes;
+  std::vector<double> times;
+  std::vector<std::uint64_t> wallCollisions;
+};
+
+GroupState stateOf(const RunGroup& group) {
+  GroupState state;
+  for (const Simulation* simulation : everySimulation(group)) {
+    state.scenes.push_back(simulation->scene());
+    state.times.push_back(simulation->time());
+    state.wallCollisions.push_back(simulation->counters().wallCollisions);
+  }
+  return state;
+}
+
+void expectSameState(const GroupState& a, const GroupState& b) {
+  ASSERT_EQ(a.scenes.size(), b.scenes.size());
+  for (std::size_t s = 0; s < a.scenes.size(); ++s) {
+    SCOPED_TRACE("simulation " + std::to_string(s));
+    ASSERT_EQ(a.scenes[s].balls.size(), b.scenes[s].balls.size());
+    for (std::size_t i = 0; i < a.scenes[s].balls.size(); ++i) {
+      const BallDef& x = a.scenes[s].balls[i];
+      const BallDef& y = b.scenes[s].balls[i];
+      EXPECT_EQ(x.position, y.position) << "ball " << i;
+      EXPECT_EQ(x.velocity, y.velocity) << "ball " << i;
+      EXPECT_EQ(x.radius, y.radius) << "ball " << i;
+      EXPECT_EQ(x.mass, y.mass) << "ball " << i;
+      EXPECT_EQ(x.color, y.color) << "ball " << i;
+    }
+    EXPECT_EQ(a.times[s], b.times[s]);
+    EXPECT_EQ(a.wallCollisions[s], b.wallCollisions[s]);
+  }
+}
+
+TEST(RunGroup, RestoreBallPutsBackEachRunsOwnStateBitExactly) {
+  // Two methods apart for long enough that ball 5 is somewhere else in each run.
+  RunGroup group = groupOf(gas(40), {"elastic", "elastic:substeps=1"});
+  group.setBaseline(true);
+  group.runFor(3.0);
+  ASSERT_NE(group.run(0).positions()[5], group.run(1).positions()[5]);
+  const GroupState before = stateOf(group);
+  const BallStates saved = group.ballStates(5);
+  ASSERT_EQ(saved.states.size(), 3u) << "two runs and the baseline";
+
+  group.deleteBall(5);
+  EXPECT_EQ(group.ballCount(), 39u);
+  group.restoreBall(5, saved, BallPlacement::Insert);
+  expectSameState(stateOf(group), before);
+
+  BallDef moved = group.ball(5);
+  moved.velocity = {9.0, 0.0};
+  group.editBall(5, moved);
+  group.restoreBall(5, saved, BallPlacement::Replace);
+  expectSameState(stateOf(group), before);
+}
+
+TEST(RunGroup, ABallThatNoLongerFitsIsNotPutBackAndNothingChanges) {
+  RunGroup group = groupOf(threeBalls(), {"elastic", "exact"});
+  const BallStates deleted = group.ballStates(0);
+  group.deleteBall(0);
+  BallDef intruder = group.ball(0);  // the ball that was 1, now 0, onto the deleted ball's place
+  intruder.position = deleted.states[0].position;
+  group.setBall(0, intruder);
+  const GroupState before = stateOf(group);
+
+  const auto problem = group.findRestoreProblem(0, deleted, BallPlacement::Insert);
+  ASSERT_TRUE(problem);
+  EXPECT_EQ(problem->kind, BallProblem::Kind::Overlaps);
+  EXPECT_EQ(problem->otherBall, 0u);
+  try {
+    group.restoreBall(0, deleted, BallPlacement::Insert);
+    ADD_FAILURE() << "put back onto another ball";
+  } catch (const BallError& error) {
+    EXPECT_EQ(plainWords(error.problem()), "The ball would overlap ball 0 (by " +
+                                               std::to_string(std::lround(100.0 * problem->value)) +
+                                               "% of the smaller radius).");
+  }
+  expectSameState(stateOf(group), before);
+}
+
 TEST(RunGroup, SetBallCountAddsTheSameBallsToEveryRunAndRemovesTheNewest) {
   RunGroup group = groupOf(gas(30), {"elastic", "elastic:substeps=1"});
   group.setBaseline(true);

@@ -9,12 +9,20 @@
 #include <QSignalBlocker>
 
 #include "fooball/scene.h"
+#include "number_field_keys.h"
 
 namespace fooball::gui {
 
 namespace {
 
 constexpr double kLimit = kMaxBoxSide;  // m, m/s: as far as any valid box reaches
+
+/// The field's value, or `exact` while the field shows `exact` as it shows any value, rounded to
+/// its decimals: an edit of one field leaves the others' values exactly as they were.
+double valueOr(const QDoubleSpinBox* field, double exact) {
+  return field->value() == field->valueFromText(field->textFromValue(exact)) ? exact
+                                                                             : field->value();
+}
 
 }  // namespace
 
@@ -88,10 +96,10 @@ QDoubleSpinBox* BallInspector::addNumberField(double minimum, double maximum, co
 
 BallDef BallInspector::editedBall() const {
   BallDef ball = ball_;
-  ball.position = {x_->value(), y_->value()};
-  ball.velocity = {vx_->value(), vy_->value()};
-  ball.radius = radius_->value();
-  ball.mass = mass_->value();
+  ball.position = {valueOr(x_, ball_.position.x), valueOr(y_, ball_.position.y)};
+  ball.velocity = {valueOr(vx_, ball_.velocity.x), valueOr(vy_, ball_.velocity.y)};
+  ball.radius = valueOr(radius_, ball_.radius);
+  ball.mass = valueOr(mass_, ball_.mass);
   return ball;
 }
 
@@ -102,7 +110,9 @@ void BallInspector::showBall(std::size_t index, const BallDef& ball, bool overwr
   ball_ = ball;
   title_->setText(tr("Ball #%1").arg(index));
   const auto show = [keepEdits](QDoubleSpinBox* field, double value) {
-    if (keepEdits && field->hasFocus()) return;
+    // A field the user is typing into keeps the text; one that merely has focus shows the ball
+    // (the mass that followed a new radius, the position of a moving ball).
+    if (keepEdits && field->hasFocus() && isBeingEdited(*field)) return;
     const QSignalBlocker blocker(field);
     field->setValue(value);
   };

@@ -21,11 +21,12 @@ class BallInspector : public QWidget {
   explicit BallInspector(QWidget* parent = nullptr);
 
   std::size_t ballIndex() const { return index_; }
-  /// The ball as the fields show it.
+  /// The ball as the fields show it; a field the user left as it was keeps the exact value,
+  /// not the rounded one it shows.
   BallDef editedBall() const;
 
  public slots:
-  /// Shows ball `index`; the field being edited keeps what the user typed unless
+  /// Shows ball `index`; the field being typed into keeps what the user typed unless
   /// `overwriteEdits` (after a refused edit: show what the ball really is).
   void showBall(std::size_t index, const BallDef& ball, bool overwriteEdits = false);
   void showError(const QString& message);

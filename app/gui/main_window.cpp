@@ -8,6 +8,7 @@
 #include <QScrollBar>
 #include <QShowEvent>
 #include <QStatusBar>
+#include <QUndoStack>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "compare_readout.h"
 #include "fooball/presets.h"
 #include "frame_loop.h"
+#include "number_field_keys.h"
 #include "run_controller.h"
 #include "run_counters.h"
 #include "run_list_editor.h"
@@ -72,8 +74,10 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
 
   createDocks();
   defaultLayout_ = saveState();
+  undoStack_ = new QUndoStack(this);
   frames_ = new FrameLoop(*this);
   actions_ = new WindowActions(*this);
+  new NumberFieldKeys(*this, *view_);  // Space and '.' reach the actions from a number field
   status_ = new StatusPanel(*statusBar(), *runs_, frames_->frameRate());
   wireSidebar(*this);
   wireView(*this);
@@ -270,6 +274,7 @@ void MainWindow::loadScene(const Scene& scene, const QString& presetName,
   sourceName_ = sourceName;
   runs_->loadScene(scene);
   view_->setPreset(findPreset(presetName_.toStdString()));
+  undoStack_->clear();  // other balls (undoStack())
   syncSidebar();
   resetCharts();
   updateTitle();
@@ -277,11 +282,13 @@ void MainWindow::loadScene(const Scene& scene, const QString& presetName,
 
 void MainWindow::restart() {
   runs_->restart();
+  undoStack_->clear();  // the balls as loaded (undoStack())
   resetCharts();
 }
 
 void MainWindow::resetScene() {
   runs_->loadScene(runs_->group().loadedScene());
+  undoStack_->clear();  // the balls as loaded (undoStack())
   resetSliders(*this);
   syncSidebar();
   resetCharts();

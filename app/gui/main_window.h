@@ -12,6 +12,7 @@
 
 class QDockWidget;
 class QScrollArea;
+class QUndoStack;
 
 namespace fooball::gui {
 
@@ -64,6 +65,10 @@ class MainWindow : public QMainWindow {
   FrameLoop& frames() const { return *frames_; }
   StatusPanel& status() const { return *status_; }
   QDockWidget* sidebarDock() const { return sidebarDock_; }
+  /// Edits and deletes of balls (ball_commands.h). Its commands name balls by index and hold
+  /// their states, so whatever renumbers or replaces the balls clears it: loading a scene or
+  /// preset, Restart, Reset scene and a ball-count change.
+  QUndoStack* undoStack() const { return undoStack_; }
   QDockWidget* chartsDock() const { return chartsDock_; }
   /// The preset the scene came from; empty for a scene file.
   const QString& presetName() const { return presetName_; }
@@ -145,6 +150,7 @@ class MainWindow : public QMainWindow {
   WindowActions* actions_ = nullptr;
   StatusPanel* status_ = nullptr;
   FrameLoop* frames_ = nullptr;
+  QUndoStack* undoStack_ = nullptr;
 
   ErrorReporter reportError_;
 };

@@ -122,6 +122,20 @@ void RunController::setBall(std::size_t index, const BallDef& ball) {
   emit ballsChanged();
 }
 
+BallDef RunController::editBall(std::size_t index, const BallDef& edited) {
+  settle();
+  const BallDef set = group_.editBall(index, edited);
+  emit ballsChanged();
+  return set;
+}
+
+void RunController::restoreBall(std::size_t index, const BallStates& saved,
+                                BallPlacement placement) {
+  settle();
+  group_.restoreBall(index, saved, placement);
+  emit ballsChanged();
+}
+
 void RunController::deleteBall(std::size_t index) {
   settle();
   group_.deleteBall(index);

@@ -78,7 +78,12 @@ class RunController : public QObject {
   void setBallCount(std::size_t count);
   /// Replaces one ball in every run; throws SceneError (validation) and keeps the state then.
   void setBall(std::size_t index, const BallDef& ball);
+  /// RunGroup::editBall: a user's edit, the mass following the radius unless chosen. Throws
+  /// SceneError (BallError for a refused ball) and keeps the state then.
+  BallDef editBall(std::size_t index, const BallDef& edited);
   void deleteBall(std::size_t index);
+  /// RunGroup::restoreBall (undo and redo); throws BallError and keeps the state then.
+  void restoreBall(std::size_t index, const BallStates& saved, BallPlacement placement);
 
   bool paused() const { return group_.paused(); }
   void setPaused(bool paused);

@@ -2,6 +2,7 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QUndoStack>
 #include <exception>
 
 #include "fooball/presets.h"
@@ -85,7 +86,10 @@ bool setBallCount(MainWindow& window, std::size_t count) {
     window.sidebar()->showBallCount(window.runs().group().ballCount());
     return false;
   }
-  if (count != before) window.markChange(QObject::tr("%1 balls").arg(count));
+  if (count != before) {
+    window.undoStack()->clear();  // balls renumbered or gone (MainWindow::undoStack)
+    window.markChange(QObject::tr("%1 balls").arg(count));
+  }
   const double scale = window.runs().group().newBallScale();
   if (count > before && scale < 1.0) {
     window.showStatus(

@@ -3,10 +3,10 @@
 #include <QStringList>
 #include <stdexcept>
 
+#include "ball_commands.h"
 #include "ball_inspector.h"
 #include "charts/chart_panel.h"
 #include "fooball/number_text.h"
-#include "fooball/scene_error.h"
 #include "frame_loop.h"
 #include "main_window.h"
 #include "number_format.h"
@@ -156,17 +156,7 @@ void wireInspector(MainWindow& window) {
   BallInspector* inspector = window.sidebar()->inspector();
   QObject::connect(inspector, &BallInspector::ballEdited, &window,
                    [&window](std::size_t index, const BallDef& ball) {
-                     try {
-                       window.runs().setBall(index, ball);
-                       window.markChange(QObject::tr("ball #%1 edited").arg(index));
-                     } catch (const SceneError& error) {
-                       const QString message = QString::fromStdString(error.what());
-                       BallInspector* shown = window.sidebar()->inspector();
-                       shown->showBall(index, window.runs().group().ball(index), true);
-                       shown->showError(message);
-                       window.showStatus(message);
-                     }
-                     window.showSelectedBall();
+                     editBall(window, index, ball);
                      window.view()->update();
                    });
   QObject::connect(inspector, &BallInspector::deleteRequested, &window,
@@ -279,11 +269,6 @@ void resetSliders(MainWindow& window) {
   sidebar->showStrength(Interactions::kDefaultStrength);
   sidebar->showTimeScale(FrameLoop::kDefaultTimeScale);
   window.markChange(QObject::tr("sliders reset"));
-}
-
-void deleteBall(MainWindow& window, std::size_t index) {
-  window.runs().deleteBall(index);
-  window.markChange(QObject::tr("ball #%1 deleted").arg(index));
 }
 
 void clearAttractors(MainWindow& window) {

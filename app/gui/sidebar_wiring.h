@@ -1,7 +1,5 @@
 #pragma once
 
-#include <cstddef>
-
 namespace fooball::gui {
 
 class MainWindow;
@@ -16,8 +14,5 @@ void wireView(MainWindow& window);
 /// Gravity, air resistance, mouse strength and speed back to the loaded scene's and defaults.
 void resetSliders(MainWindow& window);
 void clearAttractors(MainWindow& window);
-/// Removes ball `index` from every run, with a chart marker (the inspector's Delete button and
-/// the Delete key).
-void deleteBall(MainWindow& window, std::size_t index);
 
 }  // namespace fooball::gui

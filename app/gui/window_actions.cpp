@@ -6,7 +6,9 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QMenuBar>
+#include <QUndoStack>
 
+#include "ball_commands.h"
 #include "benchmark_dialog.h"
 #include "charts/chart_panel.h"
 #include "help_dialogs.h"
@@ -36,6 +38,8 @@ void WindowActions::createActions() {
   step_->setShortcut(Qt::Key_Period);
   step_->setToolTip(tr("One physics step of every run while paused (.)"));
   step_->setEnabled(false);
+
+  createUndoActions();
 
   deleteBall_ = new QAction(tr("&Delete selected ball"), this);
   deleteBall_->setShortcut(QKeySequence::Delete);
@@ -101,6 +105,30 @@ void WindowActions::createActions() {
           [useLayout] { useLayout(CompareLayout::SideBySide); });
 }
 
+void WindowActions::createUndoActions() {
+  QUndoStack* stack = window_.undoStack();
+  undo_ = new QAction(this);
+  undo_->setShortcut(QKeySequence::Undo);
+  redo_ = new QAction(this);
+  redo_->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
+  connect(undo_, &QAction::triggered, this, [this] { undoBallChange(window_); });
+  connect(redo_, &QAction::triggered, this, [this] { redoBallChange(window_); });
+  // The text names the change, "Undo move of ball 7", as QUndoStack::createUndoAction's would;
+  // these are our own actions so that a change that no longer fits is refused (ball_commands.h).
+  const auto show = [this, stack] {
+    undo_->setEnabled(stack->canUndo());
+    undo_->setText(stack->canUndo() ? tr("&Undo %1").arg(stack->undoText()) : tr("&Undo"));
+    redo_->setEnabled(stack->canRedo());
+    redo_->setText(stack->canRedo() ? tr("&Redo %1").arg(stack->redoText()) : tr("&Redo"));
+  };
+  connect(stack, &QUndoStack::indexChanged, this, show);
+  connect(stack, &QUndoStack::canUndoChanged, this, show);
+  connect(stack, &QUndoStack::canRedoChanged, this, show);
+  show();
+  undo_->setToolTip(tr("Undo the last edit or delete of a ball (Ctrl+Z)"));
+  redo_->setToolTip(tr("Redo what Undo undid (Ctrl+Shift+Z, Ctrl+Y)"));
+}
+
 void WindowActions::createMenus() {
   QMenuBar* bar = window_.menuBar();
   QMenu* file = bar->addMenu(tr("&File"));
@@ -113,6 +141,9 @@ void WindowActions::createMenus() {
                   &WindowActions::exportChartsCsv);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, &window_, &QWidget::close);
+
+  QMenu* edit = bar->addMenu(tr("&Edit"));
+  edit->addActions({undo_, redo_});
 
   QMenu* simulation = bar->addMenu(tr("&Simulation"));
   simulation->addAction(pause_);
@@ -157,7 +188,7 @@ void WindowActions::createMenus() {
   help->addAction(tr("&About FooBall"), this, [this] { showAbout(&window_); });
   help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 
-  for (QMenu* menu : {file, simulation, viewMenu, tools, help})
+  for (QMenu* menu : {file, edit, simulation, viewMenu, tools, help})
     menu->setToolTipsVisible(true);
 }
 

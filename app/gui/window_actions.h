@@ -22,6 +22,8 @@ class WindowActions : public QObject {
   QAction* pause() const { return pause_; }
   QAction* step() const { return step_; }
   QAction* deleteBall() const { return deleteBall_; }
+  QAction* undo() const { return undo_; }
+  QAction* redo() const { return redo_; }
   QAction* temperature() const { return temperature_; }
   QAction* tethers() const { return tethers_; }
   QAction* velocityVectors() const { return velocityVectors_; }
@@ -50,6 +52,8 @@ class WindowActions : public QObject {
 
  private:
   void createActions();
+  /// Edit → Undo and Redo, following the window's undo stack.
+  void createUndoActions();
   void createMenus();
   void openSceneDialog();
   void saveSceneDialog();
@@ -60,6 +64,8 @@ class WindowActions : public QObject {
   MainWindow& window_;
   QAction* pause_ = nullptr;
   QAction* deleteBall_ = nullptr;
+  QAction* undo_ = nullptr;
+  QAction* redo_ = nullptr;
   QAction* step_ = nullptr;
   QAction* temperature_ = nullptr;
   QAction* tethers_ = nullptr;

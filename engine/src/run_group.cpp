@@ -153,6 +153,7 @@ void RunGroup::load(const Scene& scene) {
     simulation.interactions.selected.reset();
     simulation.load(scene);
   });
+  massChosen_.clear();
   if (baseline_) setBaseline(true);
 }
 
@@ -164,6 +165,7 @@ void RunGroup::restart() {
     simulation.interactions.selected.reset();
     simulation.load(scene);
   });
+  massChosen_.clear();  // the balls as loaded
   // The ball count is a setting like gravity: the loaded balls, then the newest removed or new
   // ones placed as the spinner places them (the same at every restart: placed at step 0).
   setBallCount(count);
@@ -204,6 +206,7 @@ void RunGroup::setBallCount(std::size_t count) {
     balls.insert(balls.end(), added.balls.begin(), added.balls.end());
     simulation.replaceBalls(std::move(balls));
   });
+  massChosen_.resize(std::min(count, massChosen_.size()));
   if (selected() && *selected() >= count) setSelected(std::nullopt);
 }
 
@@ -226,6 +229,21 @@ void RunGroup::setBall(std::size_t index, const BallDef& ball) {
   }
 }
 
+BallDef RunGroup::editBall(std::size_t index, BallDef edited) {
+  const BallDef current = ball(index);
+  const bool massEdited = edited.mass != current.mass;
+  if (!massEdited && !massChosen(index) && edited.radius != current.radius) {
+    const double scale = edited.radius / current.radius;
+    edited.mass = current.mass * scale * scale;
+  }
+  setBall(index, edited);
+  if (massEdited) {
+    massChosen_.resize(ballCount());
+    massChosen_[index] = true;
+  }
+  return edited;
+}
+
 void RunGroup::deleteBall(std::size_t index) {
   if (index >= ballCount()) return;
   forEachSimulation([&](Simulation& simulation) {
@@ -233,7 +251,71 @@ void RunGroup::deleteBall(std::size_t index) {
     balls.erase(balls.begin() + static_cast<std::ptrdiff_t>(index));
     simulation.replaceBalls(std::move(balls));
   });
+  if (index < massChosen_.size()) massChosen_.erase(massChosen_.begin() + std::ptrdiff_t(index));
   setSelected(std::nullopt);
+}
+
+BallStates RunGroup::ballStates(std::size_t index) const {
+  BallStates saved{{}, massChosen(index)};
+  const auto stateOf = [index](const Simulation& simulation) {
+    return BallDef{simulation.positions()[index], simulation.velocities()[index],
+                   simulation.radii()[index], simulation.masses()[index],
+                   simulation.colours()[index]};
+  };
+  for (const Run& run : runs_)
+    saved.states.push_back(stateOf(*run.simulation));
+  if (baseline_) saved.states.push_back(stateOf(*baseline_));
+  return saved;
+}
+
+const BallDef& RunGroup::savedState(const BallStates& saved, std::size_t k) const {
+  return saved.states.size() == stepperCount() ? saved.states[k] : saved.states.front();
+}
+
+std::optional<BallProblem> RunGroup::findRestoreProblem(std::size_t index, const BallStates& saved,
+                                                        BallPlacement placement) const {
+  const std::optional<std::size_t> replacing =
+      placement == BallPlacement::Replace ? std::optional(index) : std::nullopt;
+  std::size_t k = 0;
+  std::optional<BallProblem> problem;
+  const auto check = [&](const Simulation& simulation) {
+    const BallDef& state = savedState(saved, k++);
+    if (!problem) problem = findBallProblem(state, simulation.box(), world().walls);
+    if (!problem && world().ballCollisions) {
+      problem = findOverlapProblem(state, simulation.positions(), simulation.radii(), replacing);
+    }
+  };
+  for (const Run& run : runs_)
+    check(*run.simulation);
+  if (baseline_) check(*baseline_);
+  return problem;
+}
+
+void RunGroup::restoreBall(std::size_t index, const BallStates& saved, BallPlacement placement) {
+  const std::size_t limit = ballCount() + (placement == BallPlacement::Insert ? 1 : 0);
+  if (index >= limit || saved.states.empty()) {
+    throw SceneError("balls[" + std::to_string(index) + "]: no such place to put a ball back");
+  }
+  if (const auto problem = findRestoreProblem(index, saved, placement)) {
+    throw BallError(
+        "balls[" + std::to_string(index) + "]: cannot be put back: " + plainWords(*problem),
+        *problem);
+  }
+  std::size_t k = 0;
+  forEachSimulation([&](Simulation& simulation) {
+    const BallDef& state = savedState(saved, k++);
+    if (placement == BallPlacement::Insert) {
+      simulation.insertBall(index, state);
+    } else {
+      simulation.setBall(index, state);
+    }
+  });
+  massChosen_.resize(ballCount() - (placement == BallPlacement::Insert ? 1 : 0));
+  if (placement == BallPlacement::Insert) {
+    massChosen_.insert(massChosen_.begin() + std::ptrdiff_t(index), saved.massChosen);
+  } else {
+    massChosen_[index] = saved.massChosen;
+  }
 }
 
 void RunGroup::setMouseMode(MouseMode mode) {

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <string>
 
+#include "fooball/ball_problem.h"
 #include "fooball/scene_file.h"
 #include "message_text.h"
 #include "overlap_search.h"
@@ -52,15 +53,6 @@ void checkLength(double value, const Place& place) {
   }
 }
 
-/// How far (m) the ball reaches past a wall, against the contact slop it may.
-void checkWallDepth(double depth, double radius, std::string_view wall, const Place& position) {
-  if (depth > kContactSlop * radius) {
-    failAt(position, "the ball crosses the " + std::string(wall) + " wall by " +
-                         roundedNumberText(depth) + " m, more than " + slopPercentText() +
-                         "% of its radius");
-  }
-}
-
 void checkBox(const Box& box, const Place& place) {
   checkLength(box.width, place.key("width"));
   checkLength(box.height, place.key("height"));
@@ -76,17 +68,47 @@ void checkWorld(const WorldSettings& world) {
   }
 }
 
+/// The scene format's words for a ball's problem (the app has its own: plainWords).
+std::string reasonText(const BallProblem& problem) {
+  const std::string got = " (got " + exactNumberText(problem.value) + ")";
+  switch (problem.kind) {
+    case BallProblem::Kind::NotFinite:
+      return "must be finite" + got;
+    case BallProblem::Kind::NotPositive:
+      return "must be > 0" + got;
+    case BallProblem::Kind::TooLarge:
+      return "must be at most " + maxBoxSideText() + " m" + got;
+    case BallProblem::Kind::NotAColour: {
+      std::array<char, 16> hex{};
+      std::snprintf(hex.data(), hex.size(), "0x%x", static_cast<unsigned>(problem.value));
+      return "must be 0xRRGGBB (got " + std::string(hex.data()) + ")";
+    }
+    case BallProblem::Kind::CrossesWall:
+      return "the ball crosses the " + std::string(problem.wall) + " wall by " +
+             roundedNumberText(problem.value) + " m, more than " + slopPercentText() +
+             "% of its radius";
+    case BallProblem::Kind::Overlaps:
+      return "overlaps balls[" + std::to_string(problem.otherBall) + "] by " +
+             roundedNumberText(100.0 * problem.value) + "% of the smaller radius (the limit is " +
+             slopPercentText() + "%)";
+  }
+  return {};
+}
+
+/// "balls[3].position[0]: must be finite (got nan)": at the place of the value, or of the ball
+/// for an overlap.
+std::string placedText(const Place& ball, const BallProblem& problem) {
+  if (problem.kind == BallProblem::Kind::Overlaps) return ball.text() + ": " + reasonText(problem);
+  const Place quantity = ball.key(problem.quantity);
+  const std::string place = problem.component >= 0
+                                ? quantity.index(std::size_t(problem.component)).text()
+                                : quantity.text();
+  return place + ": " + reasonText(problem);
+}
+
 /// The rules a ball meets wherever it is: finite, positive sizes and mass, a 24-bit colour.
 void checkBallValues(const BallDef& ball, const Place& place) {
-  checkFinite(ball.position, place.key("position"));
-  checkFinite(ball.velocity, place.key("velocity"));
-  checkLength(ball.radius, place.key("radius"));
-  checkPositive(ball.mass, place.key("mass"));
-  if (ball.color > 0xffffffu) {
-    std::array<char, 16> hex{};
-    std::snprintf(hex.data(), hex.size(), "0x%x", ball.color);
-    failAt(place.key("color"), "must be 0xRRGGBB (got " + std::string(hex.data()) + ")");
-  }
+  if (const auto problem = findValueProblem(ball)) throw SceneError(placedText(place, *problem));
 }
 
 bool isSpecNameCharacter(char c) {
@@ -117,14 +139,9 @@ void checkSpecName(std::string_view name, const Place& place, std::string_view w
 }
 
 void checkBall(const BallDef& ball, const Box& box, const Walls& walls, const Place& place) {
-  checkBallValues(ball, place);
-  const Place position = place.key("position");
-  const double r = ball.radius;
-  const Vec2 p = ball.position;
-  if (walls.left) checkWallDepth(r - p.x, r, "left", position);
-  if (walls.right) checkWallDepth(p.x + r - box.width, r, "right", position);
-  if (walls.bottom) checkWallDepth(r - p.y, r, "bottom", position);
-  if (walls.top) checkWallDepth(p.y + r - box.height, r, "top", position);
+  if (const auto problem = findBallProblem(ball, box, walls)) {
+    throw SceneError(placedText(place, *problem));
+  }
 }
 
 void checkScene(const Scene& scene) {
@@ -148,10 +165,11 @@ void checkScene(const Scene& scene) {
   }
   if (saved || !scene.world.ballCollisions) return;
   if (const auto overlap = findDeepOverlap(scene.balls, kContactSlop)) {
-    failAt(balls.index(overlap->second),
-           "overlaps balls[" + std::to_string(overlap->first) + "] by " +
-               roundedNumberText(100.0 * overlap->depthFraction) +
-               "% of the smaller radius (the limit is " + slopPercentText() + "%)");
+    BallProblem problem;
+    problem.kind = BallProblem::Kind::Overlaps;
+    problem.value = overlap->depthFraction;
+    problem.otherBall = overlap->first;
+    throw SceneError(placedText(balls.index(overlap->second), problem));
   }
 }
 
@@ -164,7 +182,9 @@ void validateScene(const Scene& scene, std::string_view source) {
 }
 
 void validateBall(const BallDef& ball, const Box& box, const Walls& walls, std::string_view where) {
-  checkBall(ball, box, walls, Place(where));
+  if (const auto problem = findBallProblem(ball, box, walls)) {
+    throw BallError(placedText(Place(where), *problem), *problem);
+  }
 }
 
 }  // namespace fooball

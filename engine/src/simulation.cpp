@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fooball/ball_problem.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
 
@@ -97,21 +98,24 @@ void Simulation::setWorld(const WorldSettings& world) {
   externalWork_ += totalEnergy() - before;
 }
 
+void Simulation::checkPlacement(const BallDef& ball, std::optional<std::size_t> replacing,
+                                std::string_view where) const {
+  validateBall(ball, box_, world_.walls, where);
+  // As in the scene format: with ball collisions off, balls pass through each other freely.
+  if (!world_.ballCollisions) return;
+  if (const auto overlap = findOverlapProblem(ball, positions_, radii_, replacing)) {
+    throw BallError(
+        std::string(where) + ": would overlap balls[" + std::to_string(overlap->otherBall) + "]",
+        *overlap);
+  }
+}
+
 void Simulation::setBall(std::size_t index, const BallDef& ball) {
   const std::string where = "balls[" + std::to_string(index) + "]";
   if (index >= ballCount()) {
     throw SceneError(where + ": no such ball (the scene has " + std::to_string(ballCount()) + ")");
   }
-  validateBall(ball, box_, world_.walls, where);
-  // As in the scene format: with ball collisions off, balls pass through each other freely.
-  for (std::size_t other = 0; world_.ballCollisions && other < ballCount(); ++other) {
-    if (other == index) continue;
-    const double reach = ball.radius + radii_[other];
-    const double depth = reach - length(ball.position - positions_[other]);
-    if (depth > kContactSlop * std::min(ball.radius, radii_[other])) {
-      throw SceneError(where + ": would overlap balls[" + std::to_string(other) + "]");
-    }
-  }
+  checkPlacement(ball, index, where);
   const double before = totalEnergy();
   backend_->setBall(index, ball);
   radii_[index] = ball.radius;
@@ -119,6 +123,18 @@ void Simulation::setBall(std::size_t index, const BallDef& ball) {
   colors_[index] = ball.color;
   refreshState();
   externalWork_ += totalEnergy() - before;
+}
+
+void Simulation::insertBall(std::size_t index, const BallDef& ball) {
+  const std::string where = "balls[" + std::to_string(index) + "]";
+  if (index > ballCount()) {
+    throw SceneError(where + ": no such place (the scene has " + std::to_string(ballCount()) +
+                     " balls)");
+  }
+  checkPlacement(ball, std::nullopt, where);
+  std::vector<BallDef> balls = scene().balls;
+  balls.insert(balls.begin() + static_cast<std::ptrdiff_t>(index), ball);
+  replaceBalls(std::move(balls));
 }
 
 void Simulation::replaceBalls(std::vector<BallDef> balls) {

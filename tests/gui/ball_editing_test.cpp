@@ -1,11 +1,16 @@
+#include <QAction>
+#include <QApplication>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSpinBox>
+#include <QStatusBar>
 
 #include "ball_inspector.h"
 #include "fooball/backend.h"
 #include "gui_fixture.h"
 #include "settings_sidebar.h"
+#include "window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -22,6 +27,23 @@ class BallEditing : public GuiTest {
     box->setFocus();
     box->setValue(value);
     QTest::keyClick(box, Qt::Key_Return);
+  }
+  /// Types `text` over an inspector field's number with real key presses, then Return.
+  void type(const char* name, const QString& text) {
+    QDoubleSpinBox* box = field(name);
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
+  }
+  /// A key press where the keyboard is now, as a user's would land.
+  void press(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    QWidget* focus = QApplication::focusWidget();
+    QTest::keyClick(focus != nullptr ? focus : window.get(), key, modifiers);
+  }
+  /// Ball `index` in every run and the baseline.
+  std::vector<BallDef> ballEverywhere(std::size_t index) const {
+    return group().ballStates(index).states;
   }
   void selectBall(std::size_t index) {
     runs().setPaused(true);
@@ -54,6 +76,133 @@ TEST_F(BallEditing, AfterEditingAFieldAClickInTheBoxGivesSpaceBackToPause) {
   EXPECT_TRUE(view()->hasFocus());
   QTest::keyClick(view(), Qt::Key_Space);
   EXPECT_FALSE(runs().paused()) << "Space paused or continued, it typed into no field";
+}
+
+TEST_F(BallEditing, ARefusedEditSaysInPlainWordsWhichBallIsInTheWay) {
+  open(stillBalls());
+  selectBall(0);
+  type("inspectorX", QStringLiteral("11.8"));  // 0.2 m from ball 1's centre: 0.8 m deep
+  EXPECT_EQ(mainRun().positions()[0], (Vec2{4.0, 4.5}));
+  const QLabel* error = inspector()->findChild<QLabel*>(QStringLiteral("inspectorError"));
+  const QString expected =
+      QStringLiteral("The ball would overlap ball 1 (by 160% of the smaller radius).");
+  EXPECT_EQ(error->text(), expected);
+  EXPECT_EQ(window->statusBar()->currentMessage(), expected);
+  type("inspectorX", QStringLiteral("0.3"));
+  EXPECT_EQ(error->text(),
+            QStringLiteral("The ball would stick out of the box through the left wall."));
+}
+
+TEST_F(BallEditing, TheMassFollowsTheRadiusUntilTheMassIsEdited) {
+  open(stillBalls());
+  selectBall(0);
+  const double mass = mainRun().masses()[0];  // π·0.5² kg
+  type("inspectorRadius", QStringLiteral("1.0"));
+  EXPECT_EQ(mainRun().radii()[0], 1.0);
+  EXPECT_EQ(mainRun().masses()[0], 4.0 * mass) << "twice the radius, four times the area";
+  EXPECT_NEAR(field("inspectorMass")->value(), 4.0 * mass, 1e-4) << "shown at once";
+
+  type("inspectorMass", QStringLiteral("2.5"));
+  type("inspectorRadius", QStringLiteral("0.75"));
+  EXPECT_EQ(mainRun().radii()[0], 0.75);
+  EXPECT_EQ(mainRun().masses()[0], 2.5) << "a mass the user chose stays";
+  EXPECT_EQ(field("inspectorMass")->value(), 2.5);
+}
+
+TEST_F(BallEditing, CtrlZUndoesAnEditInEveryRunBitExactlyAndCtrlShiftZRedoesIt) {
+  // Moving balls, two methods and the chaos baseline: ball 3 is in a slightly different state in
+  // each, and undo must give each its own back.
+  open(fooball::testing::gas(20), "elastic", {"exact"});
+  frames(90);
+  selectBall(3);
+  const std::vector<BallDef> before = ballEverywhere(3);
+  ASSERT_EQ(before.size(), 3u) << "two runs and the baseline";
+  ASSERT_NE(before[0].position, before[2].position);
+
+  type("inspectorVx", QStringLiteral("2.5"));
+  for (const BallDef& ball : ballEverywhere(3))
+    EXPECT_EQ(ball.velocity.x, 2.5);
+  EXPECT_EQ(window->actions().undo()->text(), QStringLiteral("&Undo velocity change of ball 3"));
+
+  press(Qt::Key_Z, Qt::ControlModifier);
+  const std::vector<BallDef> undone = ballEverywhere(3);
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    SCOPED_TRACE("simulation " + std::to_string(k));
+    EXPECT_EQ(undone[k].position, before[k].position);
+    EXPECT_EQ(undone[k].velocity, before[k].velocity);
+    EXPECT_EQ(undone[k].radius, before[k].radius);
+    EXPECT_EQ(undone[k].mass, before[k].mass);
+  }
+  EXPECT_EQ(window->actions().redo()->text(), QStringLiteral("&Redo velocity change of ball 3"));
+
+  press(Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+  for (const BallDef& ball : ballEverywhere(3))
+    EXPECT_EQ(ball.velocity.x, 2.5);
+}
+
+TEST_F(BallEditing, CtrlZUndoesADeleteAndTheBallComesBackInItsPlace) {
+  open(stillBalls(), "elastic", {"exact"});
+  selectBall(1);
+  QTest::keyClick(view(), Qt::Key_Delete);
+  ASSERT_EQ(group().ballCount(), 2u);
+  EXPECT_EQ(window->actions().undo()->text(), QStringLiteral("&Undo delete of ball 1"));
+  press(Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(group().ballCount(), 3u);
+  EXPECT_EQ(window->sidebar()->ballCountBox()->value(), 3);
+  for (int run = 0; run < 2; ++run) {
+    EXPECT_EQ(runs().run(run).positions()[1], (Vec2{12.0, 4.5}));
+    EXPECT_EQ(runs().run(run).positions()[2], (Vec2{8.0, 7.5})) << "the others keep their order";
+  }
+}
+
+TEST_F(BallEditing, AnUndoThatNoLongerFitsSaysWhyAndChangesNothing) {
+  open(stillBalls());
+  selectBall(0);
+  QTest::keyClick(view(), Qt::Key_Delete);
+  BallDef intruder = group().ball(0);  // was ball 1; now where ball 0 was
+  intruder.position = {4.0, 4.5};
+  runs().setBall(0, intruder);
+  press(Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(group().ballCount(), 2u);
+  EXPECT_EQ(window->statusBar()->currentMessage(),
+            QStringLiteral("Cannot undo delete of ball 0: The ball would overlap ball 0 (by "
+                           "200% of the smaller radius)."));
+  EXPECT_TRUE(window->actions().undo()->isEnabled()) << "still there to try again";
+}
+
+TEST_F(BallEditing, AfterEnterSpacePausesAndLeavesTheFieldAsItWas) {
+  open(stillBalls());
+  selectBall(0);
+  type("inspectorVy", QStringLiteral("1.5"));
+  EXPECT_TRUE(view()->hasFocus()) << "Enter gives the keyboard back to the box";
+  const QString text = field("inspectorVy")->text();
+  ASSERT_TRUE(runs().paused());
+  press(Qt::Key_Space);
+  EXPECT_FALSE(runs().paused());
+  EXPECT_EQ(field("inspectorVy")->value(), 1.5);
+  EXPECT_EQ(field("inspectorVy")->text(), text);
+}
+
+TEST_F(BallEditing, SpaceAndDotReachTheAppWhileANumberFieldMerelyHasFocus) {
+  open(stillBalls());
+  selectBall(0);
+  QDoubleSpinBox* x = field("inspectorX");
+  x->setFocus();
+  const QString text = x->text();
+  QTest::keyClick(x, Qt::Key_Period);
+  EXPECT_EQ(mainRun().steps(), 1u) << "'.' stepped";
+  QTest::keyClick(x, Qt::Key_Space);
+  EXPECT_FALSE(runs().paused()) << "Space continued";
+  EXPECT_EQ(x->text(), text);
+  EXPECT_TRUE(x->hasFocus());
+
+  // The sidebar's number fields too.
+  QSpinBox* count = window->sidebar()->ballCountBox();
+  count->setFocus();
+  const QString countText = count->text();
+  QTest::keyClick(count, Qt::Key_Space);
+  EXPECT_TRUE(runs().paused());
+  EXPECT_EQ(count->text(), countText);
 }
 
 TEST_F(BallEditing, ClickingABallWhilePausedSelectsIt) {

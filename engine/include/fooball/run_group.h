@@ -8,11 +8,21 @@
 #include <string>
 #include <vector>
 
+#include "fooball/ball_problem.h"
 #include "fooball/divergence.h"
 #include "fooball/run_spec.h"
 #include "fooball/simulation.h"
 
 namespace fooball {
+
+/// One ball as every run of a RunGroup has it: RunGroup::ballStates.
+struct BallStates {
+  std::vector<BallDef> states;  ///< one per run in run order, then the baseline's
+  bool massChosen = false;      ///< RunGroup::massChosen
+};
+
+/// How RunGroup::restoreBall puts a ball back: over the ball at its index, or before it.
+enum class BallPlacement { Replace, Insert };
 
 /// 1 to kMaxRuns runs of one scene in lockstep (DESIGN.md, "Runs, run specs and run groups"):
 /// the same start state, the same dt, the same tool forces and edits, the same number of steps.
@@ -106,9 +116,31 @@ class RunGroup {
   void setBallCount(std::size_t count);
   /// The size of the balls the last setBallCount() added relative to those there (1: same).
   double newBallScale() const { return newBallScale_; }
-  /// Replaces ball `index` in every run, or throws SceneError and changes none.
+  /// Replaces ball `index` in every run, or throws SceneError (BallError for a ball that
+  /// breaks a rule in some run) and changes none.
   void setBall(std::size_t index, const BallDef& ball);
+  /// setBall as a user's edit (the app's inspector): a new mass marks the ball's mass as chosen;
+  /// a new radius with the mass as it was scales the mass with the area (m ∝ r², the areal
+  /// density kept) unless the mass was chosen. Returns the ball as set.
+  BallDef editBall(std::size_t index, BallDef edited);
+  /// Whether the user has set ball `index`'s mass (editBall), so resizing it keeps the mass.
+  bool massChosen(std::size_t index) const {
+    return index < massChosen_.size() && massChosen_[index];
+  }
   void deleteBall(std::size_t index);
+
+  /// Ball `index` of every run, for putting it back later (undo, redo): each run's own state,
+  /// since the runs diverge.
+  BallStates ballStates(std::size_t index) const;
+  /// Why `saved` cannot be put back at `index` in some run (see restoreBall), or nothing.
+  std::optional<BallProblem> findRestoreProblem(std::size_t index, const BallStates& saved,
+                                                BallPlacement placement) const;
+  /// Puts `saved` back at `index`, each run's own state into each run (when runs were added or
+  /// removed or the baseline toggled since it was taken, every run gets run 0's): over the ball
+  /// there (Replace, undoing an edit) or before it (Insert, undoing a delete). Time, counters
+  /// and the energy budget carry on (Simulation::insertBall). Throws BallError when the ball
+  /// breaks a rule in some run, e.g. another ball is now in its place; nothing changes then.
+  void restoreBall(std::size_t index, const BallStates& saved, BallPlacement placement);
 
   // --- Mouse tools (the same in every run) -------------------------------------------------
   /// The tool settings and attractors, as every run has them (run 0's object).
@@ -172,6 +204,8 @@ class RunGroup {
   /// Every run and the baseline, in stepping order.
   template <class Action>
   void forEachSimulation(Action&& action);
+  /// The state `saved` has for the simulation `k`-th in stepping order (restoreBall).
+  const BallDef& savedState(const BallStates& saved, std::size_t k) const;
   void copyToolsTo(Simulation& simulation) const;
   void applyCores(Backend& backend) const;
   std::size_t stepperCount() const { return runs_.size() + (baseline_ ? 1 : 0); }
@@ -185,6 +219,11 @@ class RunGroup {
   bool paused_ = false;
   double accumulator_ = 0.0;  ///< s of simulated time not yet stepped
   double newBallScale_ = 1.0;
+  /// massChosen per ball, scene order. Kept here, not in the app's inspector, because the fact
+  /// belongs to a ball and must follow it as indices change (deleteBall, restoreBall,
+  /// setBallCount, load), which only the group does; not in BallDef or scene files, because it
+  /// records what the user did in this session, not physics.
+  std::vector<bool> massChosen_;
 };
 
 }  // namespace fooball

@@ -41,6 +41,7 @@ void validateScene(const Scene& scene, std::string_view source);
 std::string savedStateWarning(const Scene& scene, std::string_view source);
 
 /// The per-ball rules of validateScene (not the overlap rule); `where` is e.g. "balls[3]".
+/// Throws BallError (fooball/ball_problem.h), whose problem() says what is wrong.
 void validateBall(const BallDef& ball, const Box& box, const Walls& walls, std::string_view where);
 
 }  // namespace fooball

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -66,7 +67,13 @@ class Simulation {
   const Box& box() const { return box_; }
 
   /// Replaces ball `index` after validating it; the energy change is booked as external work.
+  /// Throws BallError (fooball/ball_problem.h) for a ball that breaks a rule of the scene format
+  /// here (values, walls, overlap with another ball), SceneError for no such ball; nothing
+  /// changes then.
   void setBall(std::size_t index, const BallDef& ball);
+  /// Puts `ball` in at scene index `index` (0 to ballCount()), the later balls one index up: an
+  /// undone delete. Validated and booked as setBall; time and counters carry on (replaceBalls).
+  void insertBall(std::size_t index, const BallDef& ball);
 
   /// Continues with a different set of balls (the ball-count spinner, deleting a ball): time,
   /// counters and the budget carry on, and the energy the change adds or removes is booked as
@@ -116,6 +123,10 @@ class Simulation {
 
  private:
   void adoptScene(const Scene& scene);
+  /// Throws BallError when `ball` may not be in this box among the other balls (all but
+  /// `replacing`); `where` names it in what(), e.g. "balls[3]".
+  void checkPlacement(const BallDef& ball, std::optional<std::size_t> replacing,
+                      std::string_view where) const;
   void refreshState();
   double totalEnergy() const;
 
