@@ -15,13 +15,15 @@ namespace {
 
 constexpr BackendInfo kBackends[] = {
     {"elastic", "time-stepped elastic solver: move, detect overlaps, separate, exchange impulses",
-     &makeElasticBackend},
-    {"box2d", "Box2D 2.4.1, restitution 1, configured for frictionless balls", &makeBox2dBackend},
-    {"exact", "event-driven solver: exact collision times, processed in order", &makeExactBackend},
+     &makeElasticBackend, kElasticLimits},
+    {"box2d", "Box2D 2.4.1, restitution 1, configured for frictionless balls", &makeBox2dBackend,
+     kBox2dLimits},
+    {"exact", "event-driven solver: exact collision times, processed in order", &makeExactBackend,
+     kExactLimits},
     {"xpbd", "small-steps position-based dynamics: predict, project contacts, restitution pass",
-     &makeXpbdBackend},
+     &makeXpbdBackend, kXpbdLimits},
     {"chipmunk", "Chipmunk2D 7.0.3, elasticity 1, configured for frictionless balls",
-     &makeChipmunkBackend},
+     &makeChipmunkBackend, kChipmunkLimits},
 };
 
 }  // namespace
@@ -30,9 +32,9 @@ std::span<const BackendInfo> registeredBackends() {
   return kBackends;
 }
 
-std::unique_ptr<Backend> createBackend(std::string_view name) {
+const BackendInfo& backendInfo(std::string_view name) {
   for (const BackendInfo& info : kBackends) {
-    if (info.name == name) return info.create();
+    if (info.name == name) return info;
   }
   std::string known;
   for (const BackendInfo& info : kBackends) {
@@ -40,6 +42,10 @@ std::unique_ptr<Backend> createBackend(std::string_view name) {
     known += info.name;
   }
   throw std::invalid_argument("unknown backend '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::unique_ptr<Backend> createBackend(std::string_view name) {
+  return backendInfo(name).create();
 }
 
 std::unique_ptr<Backend> createBackend(const RunSpec& spec) {

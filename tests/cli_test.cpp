@@ -202,6 +202,44 @@ TEST_F(CliTest, StepsCutShortAtAnEventCapAreAWarningAndTheDefaultIsExact) {
                         capped.err.substr(std::string("fooball-cli: warning: ").size())));
 }
 
+TEST_F(CliTest, ARunBeyondItsMethodsLimitsIsOneWarningLinePerRun) {
+  // The tunnelling preset's 0.1 m shooter at 60 m/s closes 2.5 radii per default substep:
+  // beyond the 2 the time-stepped methods were measured to hold (docs/accuracy.md).
+  const std::vector<std::string> shooter{"--preset", "tunnelling", "--duration", "0.2"};
+  std::vector<std::string> run{"run", "--backend", "elastic"};
+  run.insert(run.end(), shooter.begin(), shooter.end());
+  const CliResult loud = runCli(run);
+  EXPECT_EQ(loud.exitCode, 0) << loud.err;
+  EXPECT_EQ(lineCount(loud.err), 1u) << loud.err;
+  EXPECT_THAT(loud.err, ContainsRegex("^fooball-cli: warning: beyond the method's measured "
+                                      "limits \\(docs/accuracy.md\\): tunnelling \\(v·h/r = "));
+  EXPECT_THAT(loud.out, Not(IsEmpty()));
+  // --quiet drops the summary, not the warning: as with steps cut short.
+  run.push_back("--quiet");
+  const CliResult quiet = runCli(run);
+  EXPECT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, loud.err);
+  EXPECT_THAT(quiet.out, IsEmpty());
+
+  // The exact solver never tunnels: no warning.
+  std::vector<std::string> exact{"run", "--backend", "exact", "--quiet"};
+  exact.insert(exact.end(), shooter.begin(), shooter.end());
+  const CliResult exactResult = runCli(exact);
+  EXPECT_EQ(exactResult.exitCode, 0) << exactResult.err;
+  EXPECT_THAT(exactResult.err, IsEmpty());
+
+  // One line per run beyond a limit, naming it; none for the run within every limit.
+  std::vector<std::string> compare{
+      "compare", "--run", "elastic", "--run", "exact", "--run", "elastic:substeps=8", "--quiet"};
+  compare.insert(compare.end(), shooter.begin(), shooter.end());
+  const CliResult compared = runCli(compare);
+  EXPECT_EQ(compared.exitCode, 0) << compared.err;
+  EXPECT_EQ(lineCount(compared.err), 1u) << compared.err;
+  EXPECT_THAT(compared.err,
+              HasSubstr("warning: run elastic: " +
+                        loud.err.substr(std::string("fooball-cli: warning: ").size())));
+}
+
 TEST_F(CliTest, SummaryReportsStepsDtAndChangedOptions) {
   const CliResult result = runCli({"run", "--scene", twoBallsScene().string(), "--duration", "0.5",
                                    "--dt", "0.01", "--substeps", "3"});

@@ -723,6 +723,39 @@ TEST(RunGroup, TakeDueStepsAccumulatesFractionalFrames) {
   EXPECT_EQ(group.steps(), 0u) << "the caller runs the steps, not takeDueSteps";
 }
 
+TEST(RunGroup, PendingTimeIsTheSimulatedTimeNotYetStepped) {
+  // pendingTime after takeDueSteps is what was there, plus elapsed·scale, minus steps·dt: the
+  // same operations as the definition, so equal to the last bit.
+  RunGroup group = groupOf(threeBalls(), {"elastic"});
+  EXPECT_EQ(group.pendingTime(), 0.0);
+  double expected = 0.0;
+  const struct {
+    double elapsed;  // s of real time
+    double scale;    // simulated s per real s
+  } frames[] = {{kDt, 0.05}, {kDt, 0.05}, {0.7 * kDt, 1.0}, {kDt, 1.0}, {kDt, 2.5}, {0.013, 0.3}};
+  for (const auto& frame : frames) {
+    const double before = group.pendingTime();
+    const int steps = group.takeDueSteps(frame.elapsed, frame.scale);
+    expected = before + frame.elapsed * frame.scale - steps * group.dt();
+    EXPECT_EQ(group.pendingTime(), expected) << frame.elapsed << " s at " << frame.scale << "×";
+    EXPECT_GE(group.pendingTime(), 0.0);
+    EXPECT_LT(group.pendingTime(), group.dt());
+  }
+  // At 0.05× a frame of 1/60 s holds a twentieth of a step: nothing due, all of it pending.
+  RunGroup slow = groupOf(threeBalls(), {"elastic"});
+  EXPECT_EQ(slow.takeDueSteps(kDt, 0.05), 0);
+  EXPECT_EQ(slow.pendingTime(), kDt * 0.05);
+  // Pausing forgets it, and nothing accumulates while paused; a dropped backlog leaves none.
+  slow.setPaused(true);
+  EXPECT_EQ(slow.pendingTime(), 0.0);
+  EXPECT_EQ(slow.takeDueSteps(kDt, 1.0), 0);
+  EXPECT_EQ(slow.pendingTime(), 0.0);
+  slow.setPaused(false);
+  EXPECT_EQ(slow.takeDueSteps(10.5 * kDt, 1.0),
+            static_cast<int>(RunGroup::kMaxStepsPerFramePerTimeScale));
+  EXPECT_EQ(slow.pendingTime(), 0.0);
+}
+
 TEST(RunGroup, TakeDueStepsCapsAndDropsTheBacklog) {
   RunGroup group = groupOf(threeBalls(), {"elastic"});
   // A 10.5-step stall at time scale 1 is capped at 4 steps now; the other 6.5 are dropped.

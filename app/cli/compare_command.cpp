@@ -9,13 +9,13 @@
 #include "compare_chart.h"
 #include "compare_csv.h"
 #include "compare_summary.h"
-#include "fooball/cut_short_notice.h"
 #include "fooball/run_group.h"
 #include "fooball/run_spec.h"
 #include "number_text.h"
 #include "progress_line.h"
 #include "registry.h"
 #include "run_setup.h"
+#include "run_warnings.h"
 #include "usage_error.h"
 
 namespace fooball::cli {
@@ -188,10 +188,8 @@ void compareCommand(const CompareOptions& options, std::ostream& out) {
   }
   progress.clear();
   if (csv) csv->close();
-  for (std::size_t i = 0; i < group.runCount(); ++i) {
-    if (const std::string notice = cutShortNotice(group.run(i).counters()); !notice.empty())
-      std::cerr << "fooball-cli: warning: run " << group.labels()[i] << ": " << notice << '\n';
-  }
+  for (std::size_t i = 0; i < group.runCount(); ++i)
+    printRunWarnings(group.run(i), group.spec(i).backend, group.spec(i).text(), std::cerr);
 
   CompareSummary summary;
   summary.sceneName = scene.name;

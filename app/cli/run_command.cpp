@@ -5,13 +5,13 @@
 #include <iostream>
 #include <optional>
 
-#include "fooball/cut_short_notice.h"
 #include "fooball/scene_file.h"
 #include "fooball/simulation.h"
 #include "metrics_csv.h"
 #include "progress_line.h"
 #include "run_setup.h"
 #include "run_summary.h"
+#include "run_warnings.h"
 
 namespace fooball::cli {
 
@@ -119,8 +119,7 @@ void runCommand(const RunOptions& options, std::ostream& out) {
     saveSceneFile(stepsNothing ? scene : simulation.savedScene(options.backendName),
                   *options.savePath);
   }
-  if (const std::string notice = cutShortNotice(simulation.counters()); !notice.empty())
-    std::cerr << "fooball-cli: warning: " << notice << '\n';
+  printRunWarnings(simulation, options.backendName, {}, std::cerr);
   if (options.quiet) return;
 
   summary.wallSeconds = timing.wallSeconds;

@@ -8,6 +8,7 @@
 
 #include "charts/chart_panel.h"
 #include "disc_rasterizer.h"
+#include "fooball/drifted_positions.h"
 #include "fooball/presets.h"
 #include "fooball/simulation.h"
 #include "number_format.h"
@@ -299,22 +300,32 @@ double SimulationView::temperatureTopSpeed() {
   return topSpeed_;
 }
 
+void SimulationView::driftRuns() {
+  // Every run is drawn the same time ahead: they are in lockstep, so their drawn states stay
+  // comparable. The selection, vectors, tethers and centre of mass are drawn from these too,
+  // so they move with the balls.
+  const double ahead = runs_.group().pendingTime();
+  drawn_.resize(std::size_t(runs_.runCount()));
+  for (int runIndex = 0; runIndex < runs_.runCount(); ++runIndex)
+    driftedPositions(runs_.run(runIndex), ahead, drawn_[std::size_t(runIndex)]);
+}
+
 void SimulationView::paintEvent(QPaintEvent*) {
   QPainter painter(this);
   painter.fillRect(rect(), QColor::fromRgb(kSurround));
   const auto all = panels();
   if (temperature_) temperatureTopSpeed();
+  driftRuns();
   for (std::size_t k = 0; k < all.size(); ++k) {
     const Panel& panel = all[k];
-    const Simulation& run = runs_.run(panel.runIndex);
     painter.setRenderHint(QPainter::Antialiasing, false);
     paintBalls(painter, panel, k);
     paintBox(painter, panel);
     // Overlays stay inside their box, so side-by-side panels do not draw over each other.
     painter.save();
     painter.setClipRect(panel.transform.boxRect());
-    if (velocityVectors_) paintVelocityVectors(painter, panel, run);
-    paintTethers(painter, panel, run);
+    if (velocityVectors_) paintVelocityVectors(painter, panel);
+    paintTethers(painter, panel);
     painter.setRenderHint(QPainter::Antialiasing, true);
     if (centreOfMass_) paintCentreOfMass(painter, panel);
     paintSelection(painter, panel);
@@ -341,7 +352,7 @@ void SimulationView::paintBalls(QPainter& painter, const Panel& panel, std::size
   const auto toImage = [&](Vec2 p) { return QPointF(p.x * scale, (boxHeight - p.y) * scale); };
 
   const Simulation& run = runs_.run(panel.runIndex);
-  const auto positions = run.positions();
+  const auto positions = drawnPositions(panel.runIndex);
   const auto velocities = run.velocities();
   const auto radii = run.radii();
   const auto colours = runs_.group().colours();
@@ -354,7 +365,7 @@ void SimulationView::paintBalls(QPainter& painter, const Panel& panel, std::size
   for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex) {
     const Simulation& other = runs_.run(runIndex);
     const QRgb outline = ChartPanel::runColour(runIndex).rgb();
-    const auto otherPositions = other.positions();
+    const auto otherPositions = drawnPositions(runIndex);
     const auto otherRadii = other.radii();
     for (std::size_t i = 0; i < otherPositions.size(); ++i) {
       const double radius = otherRadii[i] * scale;
@@ -386,10 +397,9 @@ void SimulationView::paintBox(QPainter& painter, const Panel& panel) const {
   painter.drawLine(box.topLeft(), box.topRight());
 }
 
-void SimulationView::paintVelocityVectors(QPainter& painter, const Panel& panel,
-                                          const Simulation& run) {
-  const auto positions = run.positions();
-  const auto velocities = run.velocities();
+void SimulationView::paintVelocityVectors(QPainter& painter, const Panel& panel) {
+  const auto positions = drawnPositions(panel.runIndex);
+  const auto velocities = runs_.run(panel.runIndex).velocities();
   lines_.clear();
   const double cosine = std::cos(kArrowheadHalfAngle);
   const double sine = std::sin(kArrowheadHalfAngle);
@@ -413,10 +423,10 @@ void SimulationView::paintVelocityVectors(QPainter& painter, const Panel& panel,
   painter.drawLines(lines_.data(), static_cast<int>(lines_.size()));
 }
 
-void SimulationView::paintTethers(QPainter& painter, const Panel& panel, const Simulation& run) {
-  const Interactions& tools = run.interactions;
+void SimulationView::paintTethers(QPainter& painter, const Panel& panel) {
+  const Interactions& tools = runs_.run(panel.runIndex).interactions;
   const ViewTransform& t = panel.transform;
-  const auto positions = run.positions();
+  const auto positions = drawnPositions(panel.runIndex);
   const auto colours = runs_.group().colours();
   const bool fewBalls = positions.size() <= kColouredTetherLimit;
   const auto tetherAll = [&](QPointF from, QColor uniform) {
@@ -479,9 +489,9 @@ void SimulationView::paintTethers(QPainter& painter, const Panel& panel, const S
 }
 
 void SimulationView::paintCentreOfMass(QPainter& painter, const Panel& panel) const {
-  const auto mark = [&](const Simulation& run, QColor colour) {
-    const auto positions = run.positions();
-    const auto masses = run.masses();
+  const auto mark = [&](int runIndex, QColor colour) {
+    const auto positions = drawnPositions(runIndex);
+    const auto masses = runs_.run(runIndex).masses();
     double totalMass = 0.0;
     Vec2 weighted;
     for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -496,17 +506,18 @@ void SimulationView::paintCentreOfMass(QPainter& painter, const Panel& panel) co
     painter.drawLine(at - QPointF(12, 0), at + QPointF(12, 0));
     painter.drawLine(at - QPointF(0, 12), at + QPointF(0, 12));
   };
-  mark(runs_.run(panel.runIndex), Qt::white);
+  mark(panel.runIndex, Qt::white);
   for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex)
-    mark(runs_.run(runIndex), ChartPanel::runColour(runIndex));
+    mark(runIndex, ChartPanel::runColour(runIndex));
 }
 
 void SimulationView::paintSelection(QPainter& painter, const Panel& panel) const {
   const auto selected = runs_.group().selected();
   if (!selected) return;
-  const auto ring = [&](const Simulation& run, QColor colour) {
+  const auto ring = [&](int runIndex, QColor colour) {
+    const Simulation& run = runs_.run(runIndex);
     if (*selected >= run.ballCount()) return;
-    const QPointF at = panel.transform.toPixels(run.positions()[*selected]);
+    const QPointF at = panel.transform.toPixels(drawnPositions(runIndex)[*selected]);
     const double radius = panel.transform.toPixels(run.radii()[*selected]) + 4.0;
     painter.setBrush(Qt::NoBrush);
     painter.setPen(QPen(QColor(0, 0, 0, 180), 4.0));
@@ -517,9 +528,9 @@ void SimulationView::paintSelection(QPainter& painter, const Panel& panel) const
     painter.drawText(at + QPointF(radius * 0.75 + 4.0, -radius * 0.75 - 4.0),
                      QStringLiteral("#%1").arg(*selected));
   };
-  ring(runs_.run(panel.runIndex), Qt::white);
+  ring(panel.runIndex, Qt::white);
   for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex)
-    ring(runs_.run(runIndex), ChartPanel::runColour(runIndex));
+    ring(runIndex, ChartPanel::runColour(runIndex));
 }
 
 void SimulationView::paintCaptions(QPainter& painter, const std::vector<Caption>& captions) const {

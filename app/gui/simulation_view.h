@@ -4,6 +4,7 @@
 #include <QLineF>
 #include <QWidget>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "disc_rasterizer.h"
@@ -60,6 +61,13 @@ class SimulationView : public QWidget {
   };
   /// The captions drawn now (the Paused hint only while paused).
   std::vector<Caption> captions() const;
+
+  /// Where the last paint drew run `runIndex`'s balls (m): its stepped state carried ahead by
+  /// the simulated time not stepped yet (RunGroup::pendingTime, driftedPositions), so slow
+  /// motion moves every frame; exactly the stepped state while paused.
+  std::span<const Vec2> drawnPositions(int runIndex) const {
+    return drawn_.at(std::size_t(runIndex));
+  }
 
   bool temperatureColouring() const { return temperature_; }
   bool tethers() const { return tethers_; }
@@ -122,11 +130,13 @@ class SimulationView : public QWidget {
   Vec2 toMetres(QPointF position) const;
   std::optional<std::size_t> ballAt(QPointF position) const;
   double temperatureTopSpeed();
+  /// Fills drawn_ for this paint: every position below is drawn from it.
+  void driftRuns();
 
   void paintBalls(QPainter& painter, const Panel& panel, std::size_t panelIndex);
   void paintBox(QPainter& painter, const Panel& panel) const;
-  void paintVelocityVectors(QPainter& painter, const Panel& panel, const Simulation& run);
-  void paintTethers(QPainter& painter, const Panel& panel, const Simulation& run);
+  void paintVelocityVectors(QPainter& painter, const Panel& panel);
+  void paintTethers(QPainter& painter, const Panel& panel);
   void paintCentreOfMass(QPainter& painter, const Panel& panel) const;
   void paintSelection(QPainter& painter, const Panel& panel) const;
   void paintCaptions(QPainter& painter, const std::vector<Caption>& captions) const;
@@ -146,7 +156,8 @@ class SimulationView : public QWidget {
   double topSpeed_ = 0.0;  ///< m/s at the hot end of the temperature scale, smoothed over frames
   std::vector<QImage> ballImages_;  ///< one per panel
   DiscRasterizer rasterizer_;
-  std::vector<QLineF> lines_;  ///< reused for tethers and vectors
+  std::vector<QLineF> lines_;             ///< reused for tethers and vectors
+  std::vector<std::vector<Vec2>> drawn_;  ///< m, per run: the positions drawn (driftRuns)
 };
 
 }  // namespace fooball::gui

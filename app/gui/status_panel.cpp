@@ -5,7 +5,9 @@
 #include <QTimer>
 
 #include "fooball/cut_short_notice.h"
+#include "fooball/limit_check.h"
 #include "frame_rate.h"
+#include "registry.h"
 #include "run_controller.h"
 
 namespace fooball::gui {
@@ -32,6 +34,10 @@ StatusPanel::StatusPanel(QStatusBar& bar, const RunController& runs, const Frame
   cutShort_->setObjectName(QStringLiteral("cutShortNotice"));
   cutShort_->setStyleSheet(QStringLiteral("color: #ffb347; font-weight: bold"));
   cutShort_->hide();
+  limits_ = addField(QString());
+  limits_->setObjectName(QStringLiteral("limitNotice"));
+  limits_->setStyleSheet(cutShort_->styleSheet());
+  limits_->hide();
   timer_ = new QTimer(this);
   timer_->setInterval(kRefreshMs);
   connect(timer_, &QTimer::timeout, this, &StatusPanel::update);
@@ -63,6 +69,7 @@ void StatusPanel::update() {
                      kNoticeMs);
   }
   showCutShortSteps();
+  showCrossedLimits();
   runsField_->setText(runs_.labels().join(tr(" vs ")));
   balls_->setText(tr("%L1 balls").arg(runs_.group().ballCount()));
   time_->setText(tr("t = %1 s").arg(runs_.group().time(), 0, 'f', 2));
@@ -85,6 +92,30 @@ void StatusPanel::showCutShortSteps() {
   cutShort_->setVisible(!notices.isEmpty());
   cutShort_->setText(tr("⚠ steps cut short: %1").arg(runsCut.join(QStringLiteral(", "))));
   cutShort_->setToolTip(notices.join(QLatin1Char('\n')));
+}
+
+void StatusPanel::showCrossedLimits() {
+  if (runs_.stepping()) return;  // the backends are out: the last notice stands
+  QStringList runsBeyond;
+  QStringList explanations;
+  const QStringList labels = runs_.labels();
+  for (int i = 0; i < runs_.runCount(); ++i) {
+    const std::size_t index = std::size_t(i);
+    const MethodLimits& limits = backendInfo(runs_.group().spec(index).backend).limits;
+    const std::vector<CrossedLimit> crossed = crossedLimits(runs_.group().run(index), limits);
+    if (crossed.empty()) continue;
+    QStringList names;
+    for (const CrossedLimit& limit : crossed) {
+      names << QString::fromStdString(limitName(limit.limit));
+      explanations << labels[i] + QStringLiteral(": ") +
+                          QString::fromStdString(limitExplanation(limit));
+    }
+    runsBeyond << (runs_.comparing() ? labels[i] + QStringLiteral(" (%1)").arg(names.join(", "))
+                                     : names.join(QStringLiteral(", ")));
+  }
+  limits_->setVisible(!runsBeyond.isEmpty());
+  limits_->setText(tr("⚠ beyond method limits: %1").arg(runsBeyond.join(QStringLiteral("; "))));
+  limits_->setToolTip(explanations.join(QStringLiteral("\n\n")));
 }
 
 }  // namespace fooball::gui

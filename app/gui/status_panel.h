@@ -13,8 +13,10 @@ class RunController;
 
 /// The status bar's permanent fields: cursor position, runs, balls, simulated time, steps and
 /// frames per second and the cost of a step per run, refreshed four times a second. It also
-/// says how to give up a step that has run in the background for more than a second, and warns
-/// while any run has had steps cut short (cutShortNotice).
+/// says how to give up a step that has run in the background for more than a second, warns
+/// while any run has had steps cut short (cutShortNotice), and names the limits of its method
+/// each run is beyond (crossedLimits), with what to do in the tooltip; checked at each refresh,
+/// not per step.
 class StatusPanel : public QObject {
   Q_OBJECT
 
@@ -29,6 +31,7 @@ class StatusPanel : public QObject {
  private:
   QLabel* addField(const QString& toolTip);
   void showCutShortSteps();
+  void showCrossedLimits();
 
   QStatusBar& bar_;
   const RunController& runs_;
@@ -42,6 +45,7 @@ class StatusPanel : public QObject {
   QLabel* frames_;
   QLabel* stepCost_;
   QLabel* cutShort_;
+  QLabel* limits_;
 };
 
 }  // namespace fooball::gui

@@ -3,9 +3,20 @@
 #include <memory>
 
 #include "fooball/backend.h"
+#include "fooball/method_limits.h"
 
 namespace fooball {
 
 std::unique_ptr<Backend> makeElasticBackend();
+
+/// Where the elastic solver was measured to stop being right (docs/accuracy.md, the "Where"
+/// tables of "Tunnelling", "Resting pile under strong gravity" and "Dense packing", at its
+/// default 4 substeps). It never tunnels a wall and holds every mass ratio and scale tried.
+inline constexpr MethodLimits kElasticLimits{
+    .tunnelling = MeasuredBoundary{2.0, 2.38},  // v·h/r: passes up to 2, fails from 2.38
+    // g: passes up to 10 m/s², fails from 31.6 m/s² (energy and overlap).
+    .restingPile = MeasuredBoundary{pileSweepNumber(10.0, 4), pileSweepNumber(31.6, 4)},
+    .packing = MeasuredBoundary{0.758, 0.796},  // r = 0.1 m: overlap beyond 0.1 r from 0.796
+};
 
 }  // namespace fooball

@@ -189,6 +189,12 @@ class RunGroup {
   int takeDueSteps(double elapsedSeconds, double timeScale);
   /// Forgets time not yet stepped, e.g. after a slow step.
   void dropBacklog() { accumulator_ = 0.0; }
+  /// s of simulated time that real time has run past the last step and that no step holds yet:
+  /// what takeDueSteps() accumulated minus the steps it handed out (below dt() unless a frame
+  /// was cut at the cap; 0 while paused, after pausing and after a dropped backlog). A view
+  /// draws the balls this far ahead of their stepped state (driftedPositions), so slow motion
+  /// moves every frame though a step is due only every few frames.
+  double pendingTime() const { return accumulator_; }
   static constexpr double kMaxStepsPerFramePerTimeScale = 4.0;
 
  private:

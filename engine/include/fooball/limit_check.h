@@ -1,0 +1,58 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fooball/method_limits.h"
+#include "fooball/simulation.h"
+
+namespace fooball {
+
+/// The failure map's numbers for a run's state and settings now. O(N): the app evaluates them a
+/// few times a second and fooball-cli once at the end, never per step.
+struct LimitNumbers {
+  /// Radii of the smallest ball that any two balls can close per solver step, Δv·h / r_min, Δv
+  /// the diagonal of the velocities' bounding box (no pair closes faster, and it is never more
+  /// than √2 times the fastest pair). A ball shot at a resting twin gives the map's v·h/r.
+  double closingPerSolverStep = 0.0;
+  /// |g|·h²/r_min where balls can pile up (ball collisions on, a wall on where gravity points),
+  /// else 0.
+  double pileSinkPerSolverStep = 0.0;
+  double packingFraction = 0.0;  ///< Σ π r² / box area
+  double energyResidual = 0.0;   ///< J, the energy budget's residual: the method's own error
+  /// J, the energy the run has, or the budget says it should have, whichever is larger.
+  double energyScale = 0.0;
+};
+
+/// Needs the run's backend (its substeps): not while a step is out (Simulation::stepping()).
+LimitNumbers measureLimitNumbers(const Simulation& run);
+
+enum class MethodLimit { Tunnelling, RestingPile, Packing, EnergyError };
+
+/// The share of the energy the residual may reach before the check says so, whatever the cause:
+/// the catch-all for failures no mapped limit explains.
+inline constexpr double kEnergyErrorLimit = 0.1;
+
+struct CrossedLimit {
+  MethodLimit limit;
+  double value = 0.0;       ///< the run's number now (LimitNumbers; the residual's share of E)
+  double boundary = 0.0;    ///< MeasuredBoundary::failsFrom, or kEnergyErrorLimit
+  double passesUpTo = 0.0;  ///< the map's last passing point; 0 if none, or the energy error
+};
+
+/// The limits of `limits` that `numbers` reach (at or beyond the first measured failure), and the
+/// energy error beyond kEnergyErrorLimit.
+std::vector<CrossedLimit> crossedLimits(const LimitNumbers& numbers, const MethodLimits& limits);
+/// Both at once: what the app and fooball-cli call.
+std::vector<CrossedLimit> crossedLimits(const Simulation& run, const MethodLimits& limits);
+
+/// "tunnelling", "resting pile", "dense packing", "energy error".
+std::string limitName(MethodLimit limit);
+/// One line naming each crossed limit with its number and boundary; empty when none. fooball-cli
+/// writes it to stderr as a warning, beside cutShortNotice.
+std::string methodLimitNotice(const std::vector<CrossedLimit>& crossed);
+/// A few sentences for a tooltip: what the limit is, the run's number, the measured boundary,
+/// and what to do.
+std::string limitExplanation(const CrossedLimit& crossed);
+
+}  // namespace fooball

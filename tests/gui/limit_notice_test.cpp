@@ -1,0 +1,71 @@
+// A run beyond a limit of its method (docs/accuracy.md's failure map) says so in the status bar,
+// naming the limit, per run in compare mode; the tooltip gives the number, the boundary and what
+// to do. The default scene at its own settings shows nothing.
+
+#include <QLabel>
+#include <QSlider>
+#include <QStatusBar>
+
+#include "fooball/presets.h"
+#include "gui_fixture.h"
+#include "log_slider.h"
+#include "settings_sidebar.h"
+
+namespace fooball::gui::testing {
+namespace {
+
+class LimitNotice : public GuiTest {
+ protected:
+  const QLabel* notice() const {
+    return window->statusBar()->findChild<QLabel*>(QStringLiteral("limitNotice"));
+  }
+  /// Gravity to 100 m/s² with the sidebar's slider, as a user drags it.
+  void setStrongGravity() {
+    LogSlider* gravity = window->sidebar()->gravitySlider();
+    gravity->slider()->setValue(gravity->positionOf(100.0));
+    ASSERT_NEAR(-group().world().gravity.y, 100.0, 5.0);
+  }
+};
+
+TEST_F(LimitNotice, StrongGravityNamesTheRestingPileLimit) {
+  open(loadPreset(kDefaultPreset));
+  frames(30);
+  window->updateStatusBar();
+  ASSERT_NE(notice(), nullptr);
+  EXPECT_TRUE(notice()->isHidden()) << notice()->text().toStdString();
+
+  setStrongGravity();
+  frames(60);
+  window->updateStatusBar();
+  EXPECT_FALSE(notice()->isHidden());
+  EXPECT_TRUE(notice()->text().startsWith(QStringLiteral("⚠ beyond method limits: ")))
+      << notice()->text().toStdString();
+  EXPECT_TRUE(notice()->text().contains(QStringLiteral("resting pile")))
+      << notice()->text().toStdString();
+  const QString tip = notice()->toolTip();
+  EXPECT_TRUE(tip.contains(QStringLiteral("elastic: Resting pile: gravity sinks a resting ball")))
+      << tip.toStdString();
+  EXPECT_TRUE(tip.contains(QStringLiteral("More substeps"))) << tip.toStdString();
+
+  // Without gravity no pile can rest: that limit goes at the next refresh.
+  window->sidebar()->gravitySlider()->slider()->setValue(0);
+  window->updateStatusBar();
+  EXPECT_FALSE(notice()->text().contains(QStringLiteral("resting pile")))
+      << notice()->text().toStdString();
+}
+
+TEST_F(LimitNotice, InCompareModeNamesEachRunBeyondALimit) {
+  // 16 substeps sink a resting ball 1/16 as deep per substep: within elastic's pile limit.
+  open(loadPreset(kDefaultPreset), "elastic", {"elastic:substeps=16"});
+  setStrongGravity();
+  frames(30);
+  window->updateStatusBar();
+  const QString text = notice()->text();
+  EXPECT_FALSE(notice()->isHidden());
+  EXPECT_TRUE(text.contains(QStringLiteral("elastic (")) && text.contains("resting pile"))
+      << text.toStdString();
+  EXPECT_FALSE(text.contains(QStringLiteral("substeps=16 ("))) << text.toStdString();
+}
+
+}  // namespace
+}  // namespace fooball::gui::testing
