@@ -28,7 +28,7 @@ TEST(GasStatistics, EveryRunsHistogramCountsEveryBallOverTheSameBins) {
   group.runFor(1.0);
   GasMonitor monitor;
   const double range = 2.0;  // m/s: too short on purpose, so some balls are above it
-  const GasMonitor::Snapshot& snapshot = monitor.measure(group, range);
+  const GasMonitor::Snapshot& snapshot = monitor.measure(group, speedBins(300), range);
   ASSERT_EQ(snapshot.runs.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
     const RunGasStatistics& run = snapshot.runs[i];
@@ -54,14 +54,14 @@ TEST(GasStatistics, MaxwellBoltzmannCountsAddUpToTheBallsOverTheRangeShown) {
   const auto sum = [](const std::vector<double>& counts) {
     return std::accumulate(counts.begin(), counts.end(), 0.0);
   };
-  EXPECT_NEAR(sum(monitor.measure(group, wide).expectedCounts), 400.0, 1e-9);
+  EXPECT_NEAR(sum(monitor.measure(group, speedBins(400), wide).expectedCounts), 400.0, 1e-9);
   // Over the range speedToShow() gives at equilibrium (kTailWidths of the lightest ball), all
   // but e⁻¹⁸ of it.
   const RunGasStatistics& run = monitor.latest().runs.front();
   const double lightest =
       *std::min_element(group.run(0).masses().begin(), group.run(0).masses().end());
   const double shown = kTailWidths * std::sqrt(run.kineticTemperature / lightest);
-  const std::vector<double> counts = monitor.measure(group, shown).expectedCounts;
+  const std::vector<double> counts = monitor.measure(group, speedBins(400), shown).expectedCounts;
   EXPECT_EQ(counts.size(), speedBins(400));
   EXPECT_NEAR(sum(counts), 400.0, 400.0 * 1e-7);
   EXPECT_LT(sum(counts), 400.0);
@@ -99,11 +99,11 @@ TEST(GasStatistics, PressureAndRateAverageOverTheWindowAndStartAgainOnRestart) {
   RunGroup group(gas(300), {RunSpec{"elastic", {}}}, &makeBackend);
   GasMonitor monitor(2.0);
   const BackendCounters before = group.run(0).counters();
-  monitor.measure(group, 5.0);
+  monitor.measure(group, 20, 5.0);
   EXPECT_EQ(monitor.latest().runs.front().windowSpan, 0.0);
   EXPECT_EQ(monitor.latest().runs.front().wallPressure, 0.0);
   group.runFor(1.5);
-  const RunGasStatistics& run = monitor.measure(group, 5.0).runs.front();
+  const RunGasStatistics& run = monitor.measure(group, 20, 5.0).runs.front();
   const BackendCounters after = group.run(0).counters();
   EXPECT_NEAR(run.windowSpan, 1.5, 1e-9);
   // Impulse per second per metre of the box's 50 m of walls; two balls per collision.
@@ -114,11 +114,11 @@ TEST(GasStatistics, PressureAndRateAverageOverTheWindowAndStartAgainOnRestart) {
   EXPECT_GT(run.collisionRate, 0.0);
 
   group.runFor(3.0);  // the window slides: the oldest measurement falls out
-  monitor.measure(group, 5.0);
+  monitor.measure(group, 20, 5.0);
   EXPECT_NEAR(monitor.latest().runs.front().windowSpan, 3.0, 1e-9);
 
   group.restart();  // time and counters from 0: the window starts again
-  EXPECT_EQ(monitor.measure(group, 5.0).runs.front().windowSpan, 0.0);
+  EXPECT_EQ(monitor.measure(group, 20, 5.0).runs.front().windowSpan, 0.0);
 }
 
 TEST(GasStatistics, CaveatsNameWhatKeepsTheGasFromEquilibrium) {

@@ -22,6 +22,7 @@
 #include "settings_sidebar.h"
 #include "sidebar_wiring.h"
 #include "simulation_view.h"
+#include "statistics_panel.h"
 #include "status_panel.h"
 #include "window_actions.h"
 #include "window_settings.h"
@@ -99,6 +100,7 @@ MainWindow::~MainWindow() {
   actions_->destroyBenchmark();
   delete sidebarDock_;
   delete chartsDock_;
+  delete statisticsDock_;
   delete takeCentralWidget();
 }
 
@@ -123,6 +125,19 @@ void MainWindow::createDocks() {
   // The charts run the full width under the box and the settings: a wide strip fits four charts
   // side by side, and the settings column, which scrolls anyway, leaves the box the height.
   setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+
+  // The statistics take the charts' place as a tab when opened: the box keeps its room, and the
+  // wide strip fits the histogram beside its table.
+  statistics_ = new StatisticsPanel;
+  statisticsDock_ = new QDockWidget(tr("Statistics"), this);
+  statisticsDock_->setObjectName(QStringLiteral("statisticsDock"));
+  statisticsDock_->setWidget(statistics_);
+  tabifyDockWidget(chartsDock_, statisticsDock_);
+  statisticsDock_->hide();
+  // Shown, or brought to the front of its tabs: measure at once rather than at the next refresh.
+  connect(statisticsDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+    if (visible) QMetaObject::invokeMethod(this, &MainWindow::showStatistics, Qt::QueuedConnection);
+  });
 }
 
 void MainWindow::connectRuns() {
@@ -184,6 +199,7 @@ void MainWindow::showRuns() {
   compareReadout_->setVisible(runs_->comparing() || runs_->group().hasBaseline());
   compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
   sidebar_->counters()->showRuns(runs_->labels());
+  statistics_->showRuns(runs_->labels());
   showReadouts();
 }
 
@@ -203,6 +219,10 @@ void MainWindow::showReadouts() {
       metrics.push_back(group.run(i).metrics());
     counters->showMetrics(metrics);
   }
+}
+
+void MainWindow::showStatistics() {
+  statistics_->refresh(runs_->group());
 }
 
 void MainWindow::syncSidebar() {
@@ -232,6 +252,8 @@ void MainWindow::resetCharts() {
   charts_->setBaselineShown(runs_->group().hasBaseline());
   frames_->restartSampling();
   sampleCharts();
+  statistics_->restart();
+  showStatistics();
 }
 
 void MainWindow::sampleCharts() {

@@ -50,6 +50,7 @@ void WindowActions::createActions() {
     window_.runs().stepOnce();
     window_.sampleCharts();
     window_.showReadouts();
+    window_.showStatistics();
     window_.showSelectedBall();
     window_.view()->update();
     window_.updateStatusBar();
@@ -124,13 +125,23 @@ void WindowActions::createMenus() {
   sidebarToggle->setShortcut(QKeySequence(tr("Ctrl+1")));
   QAction* chartsToggle = window_.chartsDock()->toggleViewAction();
   chartsToggle->setShortcut(QKeySequence(tr("Ctrl+2")));
-  viewMenu->addActions({sidebarToggle, chartsToggle});
+  QAction* statisticsToggle = window_.statisticsDock()->toggleViewAction();
+  statisticsToggle->setShortcut(QKeySequence(tr("Ctrl+3")));
+  statisticsToggle->setToolTip(
+      tr("Speed histogram against Maxwell–Boltzmann, temperature, pressure and collision rate "
+         "against the hard-disk theory (Ctrl+3)"));
+  // Opened, it comes to the front of the tabs it shares with the charts.
+  connect(statisticsToggle, &QAction::toggled, this, [this](bool on) {
+    if (on) window_.statisticsDock()->raise();
+  });
+  viewMenu->addActions({sidebarToggle, chartsToggle, statisticsToggle});
   QAction* focusBox = viewMenu->addAction(tr("&Focus the box"), QKeySequence(Qt::Key_Escape),
                                           window_.view(), qOverload<>(&QWidget::setFocus));
   focusBox->setToolTip(tr("Give the keyboard back to the box (Esc): Space pauses, '.' steps"));
   QAction* resetLayout =
       viewMenu->addAction(tr("Reset &layout"), &window_, &MainWindow::resetLayout);
-  resetLayout->setToolTip(tr("Put the settings and charts back where they were at first start"));
+  resetLayout->setToolTip(
+      tr("Put the settings and charts back where they were at first start, statistics closed"));
   viewMenu->addSeparator();
   viewMenu->addActions({temperature_, tethers_, velocityVectors_, centreOfMass_});
   viewMenu->addSeparator();
@@ -157,6 +168,11 @@ void WindowActions::applyShowOptions(const QStringList& show) {
   if (show.contains(QStringLiteral("vectors"))) velocityVectors_->setChecked(true);
   if (show.contains(QStringLiteral("centre-of-mass"))) centreOfMass_->setChecked(true);
   if (show.contains(QStringLiteral("side-by-side"))) sideBySide_->trigger();
+  if (show.contains(QStringLiteral("statistics"))) {
+    window_.statisticsDock()->show();
+    // To the front of its tabs once the window is shown: before that, raise() has no tab bar.
+    QMetaObject::invokeMethod(window_.statisticsDock(), &QDockWidget::raise, Qt::QueuedConnection);
+  }
 }
 
 void WindowActions::showPaused(bool paused) {

@@ -56,9 +56,9 @@ RunGasStatistics measureGas(const Simulation& run, GasWindow& window, std::size_
 
 GasMonitor::GasMonitor(double windowSeconds) : emptyWindow_(windowSeconds) {}
 
-const GasMonitor::Snapshot& GasMonitor::measure(const RunGroup& group, double range) {
+const GasMonitor::Snapshot& GasMonitor::measure(const RunGroup& group, std::size_t bins,
+                                                double range) {
   if (windows_.size() != group.runCount()) windows_.assign(group.runCount(), emptyWindow_);
-  const std::size_t bins = speedBins(group.ballCount());
   latest_.runs.clear();
   for (std::size_t i = 0; i < group.runCount(); ++i)
     latest_.runs.push_back(measureGas(group.run(i), windows_[i], bins, range, scratch_));

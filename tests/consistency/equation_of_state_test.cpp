@@ -37,11 +37,12 @@ TEST(EquationOfState, ExactGasAtPackingFractionPointThreePressesAsHendersonSays)
                  [](const RunSpec& run) { return createBackend(run); });
   group.setDt(kDt);
   GasMonitor monitor(100.0);
-  const double range = 10.0;  // m/s, any: the histogram plays no part here
-  group.runFor(3.0);          // over a hundred collisions per ball
-  monitor.measure(group, range);
+  const std::size_t bins = 40;  // and a range of 10 m/s: the histogram plays no part here
+  const double range = 10.0;
+  group.runFor(3.0);  // over a hundred collisions per ball
+  monitor.measure(group, bins, range);
   group.runFor(10.0);
-  const RunGasStatistics gas = monitor.measure(group, range).runs.front();
+  const RunGasStatistics gas = monitor.measure(group, bins, range).runs.front();
   ASSERT_NEAR(gas.windowSpan, 10.0, 1e-9);
   const HardDiskTheory& theory = gas.theory;
   ASSERT_NEAR(theory.packingFraction, 0.3, 1e-3);

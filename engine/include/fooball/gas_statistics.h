@@ -79,9 +79,10 @@ class GasMonitor {
   /// `windowSeconds` > 0, else std::invalid_argument.
   explicit GasMonitor(double windowSeconds = kDefaultWindowSeconds);
 
-  /// Measures every run of `group` now over speedBins() bins of [0, `range`) (m/s, > 0). A run
-  /// added or removed since, or restarted, starts its window afresh.
-  const Snapshot& measure(const RunGroup& group, double range);
+  /// Measures every run of `group` now over `bins` (≥ 1; speedBins() suggests how many) equal
+  /// bins of [0, `range`) (m/s, > 0). A run restarted since starts its window afresh, and all
+  /// do when the number of runs changed.
+  const Snapshot& measure(const RunGroup& group, std::size_t bins, double range);
   /// Forgets the windows: after the runs were restarted or replaced.
   void clear();
   const Snapshot& latest() const { return latest_; }
