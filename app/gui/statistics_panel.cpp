@@ -87,8 +87,14 @@ void StatisticsPanel::restart() {
   speedScale_.reset();
 }
 
+bool StatisticsPanel::onScreen() const {
+  // A dock behind another's tab stays "visible" to Qt, moved out of its window's sight.
+  // (visibleRegion() will not tell: the chart and the table cover the panel, so it is empty.)
+  return isVisible() && window()->rect().intersects(QRect(mapTo(window(), QPoint()), size()));
+}
+
 void StatisticsPanel::refresh(const RunGroup& group) {
-  if (!isVisible()) return;
+  if (!onScreen()) return;
   double fastest = 0.0;  // m/s
   for (std::size_t i = 0; i < group.runCount(); ++i)
     fastest = std::max(fastest, speedToShow(group.run(i)));

@@ -38,6 +38,8 @@ class StatisticsPanel : public QWidget {
   /// Measures `group` and draws it now, if the panel is on screen; does nothing otherwise (the
   /// dock closed, or behind the charts' tab).
   void refresh(const RunGroup& group);
+  /// Shown in an open dock, and not behind the charts' tab.
+  bool onScreen() const;
   /// Refreshes that measured something since the panel was made.
   int refreshCount() const { return refreshes_; }
 

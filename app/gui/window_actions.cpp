@@ -130,9 +130,9 @@ void WindowActions::createMenus() {
   statisticsToggle->setToolTip(
       tr("Speed histogram against Maxwell–Boltzmann, temperature, pressure and collision rate "
          "against the hard-disk theory (Ctrl+3)"));
-  // Opened, it comes to the front of the tabs it shares with the charts.
+  // Opened, it comes to the front of the tabs it shares with the charts, once its tab is back.
   connect(statisticsToggle, &QAction::toggled, this, [this](bool on) {
-    if (on) window_.statisticsDock()->raise();
+    if (on) raiseStatistics();
   });
   viewMenu->addActions({sidebarToggle, chartsToggle, statisticsToggle});
   QAction* focusBox = viewMenu->addAction(tr("&Focus the box"), QKeySequence(Qt::Key_Escape),
@@ -170,9 +170,14 @@ void WindowActions::applyShowOptions(const QStringList& show) {
   if (show.contains(QStringLiteral("side-by-side"))) sideBySide_->trigger();
   if (show.contains(QStringLiteral("statistics"))) {
     window_.statisticsDock()->show();
-    // To the front of its tabs once the window is shown: before that, raise() has no tab bar.
-    QMetaObject::invokeMethod(window_.statisticsDock(), &QDockWidget::raise, Qt::QueuedConnection);
+    raiseStatistics();
   }
+}
+
+void WindowActions::raiseStatistics() {
+  // Queued: a dock being shown, or in a window not shown yet, has no tab to raise until the
+  // layout has run.
+  QMetaObject::invokeMethod(window_.statisticsDock(), &QDockWidget::raise, Qt::QueuedConnection);
 }
 
 void WindowActions::showPaused(bool paused) {
