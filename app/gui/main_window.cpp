@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QMessageBox>
@@ -8,6 +9,7 @@
 #include <QScrollBar>
 #include <QShowEvent>
 #include <QStatusBar>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -132,8 +134,22 @@ void MainWindow::createDocks() {
   statisticsDock_ = new QDockWidget(tr("Statistics"), this);
   statisticsDock_->setObjectName(QStringLiteral("statisticsDock"));
   statisticsDock_->setWidget(statistics_);
-  tabifyDockWidget(chartsDock_, statisticsDock_);
+  addDockWidget(Qt::BottomDockWidgetArea, statisticsDock_);
   statisticsDock_->hide();
+  // Tabbed when opened, not before: a saved layout with a tab group holding a closed dock comes
+  // back wider than the window's least width (868 px against 505 on an 800 px test screen).
+  // Where the user has moved it, it stays.
+  connect(statisticsDock_->toggleViewAction(), &QAction::toggled, this, [this](bool open) {
+    if (!open) return;
+    if (dockWidgetArea(statisticsDock_) == Qt::BottomDockWidgetArea &&
+        !statisticsDock_->isFloating() && !chartsDock_->isHidden() &&
+        !tabifiedDockWidgets(statisticsDock_).contains(chartsDock_)) {
+      tabifyDockWidget(chartsDock_, statisticsDock_);
+    }
+    // To the front of its tabs once the layout has run: before, a dock just shown or in a window
+    // not shown yet has no tab to raise.
+    QTimer::singleShot(0, statisticsDock_, &QDockWidget::raise);
+  });
   // Shown, or brought to the front of its tabs: measure at once rather than at the next refresh.
   connect(statisticsDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
     if (visible) QMetaObject::invokeMethod(this, &MainWindow::showStatistics, Qt::QueuedConnection);
@@ -326,6 +342,9 @@ void MainWindow::updateTitle() {
 
 void MainWindow::resetLayout() {
   showNormal();
+  // Out of its tab group first: restoreState() would leave a shell of the group behind, in
+  // which the reopened dock could not be raised.
+  removeDockWidget(statisticsDock_);
   restoreState(defaultLayout_);
   resize(kDefaultSize);
   keepFullyOnScreen(*this);

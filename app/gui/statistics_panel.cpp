@@ -70,8 +70,16 @@ void StatisticsPanel::showRuns(const QStringList& labels) {
   fitTableWidth();
 }
 
+void StatisticsPanel::hideEvent(QHideEvent* event) {
+  QWidget::hideEvent(event);
+  // Closed, the panel still counts in its dock area's least width: it must not widen the window.
+  tableScroll_->setMinimumWidth(0);
+}
+
 void StatisticsPanel::fitTableWidth() {
-  // A scroll area asks for little room of its own: give it the table's width, up to a limit.
+  // A scroll area asks for little room of its own: give it the table's width, up to a limit,
+  // while it is on screen (see hideEvent).
+  if (!onScreen()) return;
   const int scrollBar = tableScroll_->verticalScrollBar()->sizeHint().width();
   tableScroll_->setMinimumWidth(
       std::min(readout_->sizeHint().width() + scrollBar, int(kMaxTableShare * width())));

@@ -50,6 +50,7 @@ class StatisticsPanel : public QWidget {
 
  protected:
   void resizeEvent(QResizeEvent* event) override;
+  void hideEvent(QHideEvent* event) override;
 
  private:
   /// The scroll area's least width: the table's, up to a share of the panel's.

@@ -130,10 +130,6 @@ void WindowActions::createMenus() {
   statisticsToggle->setToolTip(
       tr("Speed histogram against Maxwell–Boltzmann, temperature, pressure and collision rate "
          "against the hard-disk theory (Ctrl+3)"));
-  // Opened, it comes to the front of the tabs it shares with the charts, once its tab is back.
-  connect(statisticsToggle, &QAction::toggled, this, [this](bool on) {
-    if (on) raiseStatistics();
-  });
   viewMenu->addActions({sidebarToggle, chartsToggle, statisticsToggle});
   QAction* focusBox = viewMenu->addAction(tr("&Focus the box"), QKeySequence(Qt::Key_Escape),
                                           window_.view(), qOverload<>(&QWidget::setFocus));
@@ -168,16 +164,8 @@ void WindowActions::applyShowOptions(const QStringList& show) {
   if (show.contains(QStringLiteral("vectors"))) velocityVectors_->setChecked(true);
   if (show.contains(QStringLiteral("centre-of-mass"))) centreOfMass_->setChecked(true);
   if (show.contains(QStringLiteral("side-by-side"))) sideBySide_->trigger();
-  if (show.contains(QStringLiteral("statistics"))) {
-    window_.statisticsDock()->show();
-    raiseStatistics();
-  }
-}
-
-void WindowActions::raiseStatistics() {
-  // Queued: a dock being shown, or in a window not shown yet, has no tab to raise until the
-  // layout has run.
-  QMetaObject::invokeMethod(window_.statisticsDock(), &QDockWidget::raise, Qt::QueuedConnection);
+  // In front of the charts' tab (MainWindow::createDocks).
+  if (show.contains(QStringLiteral("statistics"))) window_.statisticsDock()->show();
 }
 
 void WindowActions::showPaused(bool paused) {

@@ -54,8 +54,6 @@ class WindowActions : public QObject {
   void exportChartsPng();
   void exportChartsCsv();
   void openBenchmark();
-  /// The statistics dock to the front of the tabs it shares with the charts.
-  void raiseStatistics();
 
   MainWindow& window_;
   QAction* pause_ = nullptr;

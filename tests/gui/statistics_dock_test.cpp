@@ -78,6 +78,11 @@ TEST_F(StatisticsDock, ViewActionOpensAndClosesItAndResetLayoutClosesIt) {
   settle();
   EXPECT_TRUE(window->statisticsDock()->isHidden());
   EXPECT_TRUE(onScreen(window->charts()));
+  toggle()->trigger();  // opened again: a tab of the charts, as at first
+  settle();
+  EXPECT_TRUE(window->tabifiedDockWidgets(window->statisticsDock()).contains(window->chartsDock()));
+  EXPECT_TRUE(statistics().onScreen());
+  EXPECT_FALSE(onScreen(window->charts()));
 }
 
 TEST_F(StatisticsDock, NothingIsMeasuredWhileClosedOrBehindTheCharts) {
