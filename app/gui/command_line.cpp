@@ -13,7 +13,8 @@ namespace fooball::gui {
 namespace {
 
 const QStringList kShowItems{QStringLiteral("temperature"), QStringLiteral("vectors"),
-                             QStringLiteral("centre-of-mass"), QStringLiteral("side-by-side")};
+                             QStringLiteral("centre-of-mass"), QStringLiteral("side-by-side"),
+                             QStringLiteral("statistics")};
 
 /// A run spec whose backend and options exist (by making the backend once).
 RunSpec checkedRunSpec(const QString& text) {
@@ -84,7 +85,7 @@ QString usageText() {
       "  --size WxH         the window's size in pixels, e.g. 1440x900\n"
       "  --balls N          add or remove balls after loading, like the ball spinner\n"
       "  --show ITEM,...    turn on drawing options: temperature, vectors, centre-of-mass,\n"
-      "                     side-by-side (compare layout)\n"
+      "                     side-by-side (compare layout); statistics opens that dock\n"
       "  --attractor X,Y    place a permanent attractor at (X, Y) metres (repeatable)\n"
       "  --frames N         run N frames (physics for 1/60 s + drawing each), print the mean\n"
       "                     frame time in ms and exit; works without a display\n"

@@ -27,7 +27,8 @@ struct CommandLine {
   std::optional<std::size_t> balls;  ///< ball count after loading, like the spinner
   std::optional<int> frames;         ///< run this many frames, print the mean frame time, exit
   std::optional<QString> screenshot;
-  /// Drawing options to turn on: "temperature", "vectors", "centre-of-mass", "side-by-side".
+  /// Drawing options to turn on: "temperature", "vectors", "centre-of-mass", "side-by-side";
+  /// "statistics" opens the Statistics dock.
   QStringList show;
   std::vector<Vec2> attractors;  ///< m, permanent attractors placed at the start
   bool help = false;

@@ -12,8 +12,8 @@ namespace fooball::gui {
 class MainWindow;
 
 /// The window's frames: a ~60 Hz timer that turns elapsed real time (times the speed slider)
-/// into physics steps, feeds the charts every few frames and the readouts a few times a second,
-/// and asks for a repaint. --frames drives advance() itself.
+/// into physics steps, feeds the charts every few frames and the readouts and statistics a few
+/// times a second, and asks for a repaint. --frames drives advance() itself.
 class FrameLoop : public QObject {
   Q_OBJECT
 
@@ -43,6 +43,7 @@ class FrameLoop : public QObject {
   double timeScale_ = kDefaultTimeScale;
   int framesSinceSample_ = 0;
   int framesSinceReadout_ = 0;
+  int framesSinceStatistics_ = 0;
 };
 
 }  // namespace fooball::gui

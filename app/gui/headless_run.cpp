@@ -49,6 +49,7 @@ int runHeadless(MainWindow& window, int frames, const std::optional<QString>& sc
   if (screenshotPath) {
     window.updateStatusBar();
     window.charts()->refresh();
+    window.showStatistics();
     QApplication::processEvents();
     if (!window.grab().save(*screenshotPath, "PNG")) {
       std::cerr << "fooball: error: could not write " << screenshotPath->toStdString() << '\n';

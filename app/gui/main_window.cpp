@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QMessageBox>
@@ -8,6 +9,7 @@
 #include <QScrollBar>
 #include <QShowEvent>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include "settings_sidebar.h"
 #include "sidebar_wiring.h"
 #include "simulation_view.h"
+#include "statistics_panel.h"
 #include "status_panel.h"
 #include "window_actions.h"
 #include "window_settings.h"
@@ -105,6 +108,7 @@ MainWindow::~MainWindow() {
   actions_->destroyBenchmark();
   delete sidebarDock_;
   delete chartsDock_;
+  delete statisticsDock_;
   delete takeCentralWidget();
 }
 
@@ -129,6 +133,33 @@ void MainWindow::createDocks() {
   // The charts run the full width under the box and the settings: a wide strip fits four charts
   // side by side, and the settings column, which scrolls anyway, leaves the box the height.
   setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+
+  // The statistics take the charts' place as a tab when opened: the box keeps its room, and the
+  // wide strip fits the histogram beside its table.
+  statistics_ = new StatisticsPanel;
+  statisticsDock_ = new QDockWidget(tr("Statistics"), this);
+  statisticsDock_->setObjectName(QStringLiteral("statisticsDock"));
+  statisticsDock_->setWidget(statistics_);
+  addDockWidget(Qt::BottomDockWidgetArea, statisticsDock_);
+  statisticsDock_->hide();
+  // Tabbed when opened, not before: a saved layout with a tab group holding a closed dock comes
+  // back wider than the window's least width (868 px against 505 on an 800 px test screen).
+  // Where the user has moved it, it stays.
+  connect(statisticsDock_->toggleViewAction(), &QAction::toggled, this, [this](bool open) {
+    if (!open) return;
+    if (dockWidgetArea(statisticsDock_) == Qt::BottomDockWidgetArea &&
+        !statisticsDock_->isFloating() && !chartsDock_->isHidden() &&
+        !tabifiedDockWidgets(statisticsDock_).contains(chartsDock_)) {
+      tabifyDockWidget(chartsDock_, statisticsDock_);
+    }
+    // To the front of its tabs once the layout has run: before, a dock just shown or in a window
+    // not shown yet has no tab to raise.
+    QTimer::singleShot(0, statisticsDock_, &QDockWidget::raise);
+  });
+  // Shown, or brought to the front of its tabs: measure at once rather than at the next refresh.
+  connect(statisticsDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+    if (visible) QMetaObject::invokeMethod(this, &MainWindow::showStatistics, Qt::QueuedConnection);
+  });
 }
 
 void MainWindow::connectRuns() {
@@ -190,6 +221,7 @@ void MainWindow::showRuns() {
   compareReadout_->setVisible(runs_->comparing() || runs_->group().hasBaseline());
   compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
   sidebar_->counters()->showRuns(runs_->labels());
+  statistics_->showRuns(runs_->labels());
   showReadouts();
 }
 
@@ -209,6 +241,10 @@ void MainWindow::showReadouts() {
       metrics.push_back(group.run(i).metrics());
     counters->showMetrics(metrics);
   }
+}
+
+void MainWindow::showStatistics() {
+  statistics_->refresh(runs_->group());
 }
 
 void MainWindow::syncSidebar() {
@@ -238,6 +274,8 @@ void MainWindow::resetCharts() {
   charts_->setBaselineShown(runs_->group().hasBaseline());
   frames_->restartSampling();
   sampleCharts();
+  statistics_->restart();
+  showStatistics();
 }
 
 void MainWindow::sampleCharts() {
@@ -314,6 +352,9 @@ void MainWindow::updateTitle() {
 
 void MainWindow::resetLayout() {
   showNormal();
+  // Out of its tab group first: restoreState() would leave a shell of the group behind, in
+  // which the reopened dock could not be raised.
+  removeDockWidget(statisticsDock_);
   restoreState(defaultLayout_);
   resize(kDefaultSize);
   keepFullyOnScreen(*this);

@@ -22,6 +22,7 @@ class FrameLoop;
 class RunController;
 class SettingsSidebar;
 class SimulationView;
+class StatisticsPanel;
 class StatusPanel;
 class WindowActions;
 
@@ -43,9 +44,9 @@ struct StartupOptions {
 };
 
 /// The FooBall window: it creates the simulation view with the compare readout above it, the
-/// settings sidebar and the chart panel in docks, the menus (WindowActions), the status bar
-/// (StatusPanel) and the frame loop (FrameLoop), connects them to the RunController, and
-/// keeps the widgets in step with the runs. The runs' bookkeeping lives in the engine's
+/// settings sidebar, the chart panel and the gas statistics in docks, the menus (WindowActions),
+/// the status bar (StatusPanel) and the frame loop (FrameLoop), connects them to the RunController,
+/// and keeps the widgets in step with the runs. The runs' bookkeeping lives in the engine's
 /// RunGroup; what the sidebar's controls do is in sidebar_wiring.cpp, scene files and presets
 /// in scene_commands.cpp.
 class MainWindow : public QMainWindow {
@@ -61,6 +62,7 @@ class MainWindow : public QMainWindow {
   SettingsSidebar* sidebar() const { return sidebar_; }
   ChartPanel* charts() const { return charts_; }
   CompareReadout* compareReadout() const { return compareReadout_; }
+  StatisticsPanel* statistics() const { return statistics_; }
   WindowActions& actions() const { return *actions_; }
   FrameLoop& frames() const { return *frames_; }
   StatusPanel& status() const { return *status_; }
@@ -70,6 +72,8 @@ class MainWindow : public QMainWindow {
   /// preset, Restart, Reset scene and a ball-count change.
   QUndoStack* undoStack() const { return undoStack_; }
   QDockWidget* chartsDock() const { return chartsDock_; }
+  /// Closed at first; opened, it shares the charts' place as a tab.
+  QDockWidget* statisticsDock() const { return statisticsDock_; }
   /// The preset the scene came from; empty for a scene file.
   const QString& presetName() const { return presetName_; }
   /// The preset's or the scene file's name, as in the title.
@@ -84,8 +88,9 @@ class MainWindow : public QMainWindow {
   void loadScene(const Scene& scene, const QString& presetName, const QString& sourceName);
   /// Back to the loaded scene at t = 0, keeping the settings of now.
   void restart();
-  /// View → Reset layout: both docks back in place and shown, the default window size (fitted
-  /// to the screen), the charts and settings at their first share.
+  /// View → Reset layout: the settings and charts back in place and shown, the statistics
+  /// closed, the default window size (fitted to the screen), the charts and settings at their
+  /// first share.
   void resetLayout();
   /// The loaded scene exactly as loaded, sliders at their defaults.
   void resetScene();
@@ -98,6 +103,8 @@ class MainWindow : public QMainWindow {
   /// Shows every run's divergence in the compare readout and its counters in the sidebar now
   /// (also while paused), each only while it is on screen.
   void showReadouts();
+  /// Measures and draws the gas statistics now, if their dock is on screen (nothing otherwise).
+  void showStatistics();
   /// Real-time frames from a timer (the interactive app; --frames drives advanceFrame itself).
   void startLiveUpdates();
   void updateStatusBar();
@@ -147,6 +154,8 @@ class MainWindow : public QMainWindow {
   QDockWidget* sidebarDock_ = nullptr;
   QScrollArea* sidebarScroll_ = nullptr;
   QDockWidget* chartsDock_ = nullptr;
+  StatisticsPanel* statistics_ = nullptr;
+  QDockWidget* statisticsDock_ = nullptr;
   WindowActions* actions_ = nullptr;
   StatusPanel* status_ = nullptr;
   FrameLoop* frames_ = nullptr;

@@ -54,6 +54,7 @@ void WindowActions::createActions() {
     window_.runs().stepOnce();
     window_.sampleCharts();
     window_.showReadouts();
+    window_.showStatistics();
     window_.showSelectedBall();
     window_.view()->update();
     window_.updateStatusBar();
@@ -163,13 +164,19 @@ void WindowActions::createMenus() {
   sidebarToggle->setShortcut(QKeySequence(tr("Ctrl+1")));
   QAction* chartsToggle = window_.chartsDock()->toggleViewAction();
   chartsToggle->setShortcut(QKeySequence(tr("Ctrl+2")));
-  viewMenu->addActions({sidebarToggle, chartsToggle});
+  QAction* statisticsToggle = window_.statisticsDock()->toggleViewAction();
+  statisticsToggle->setShortcut(QKeySequence(tr("Ctrl+3")));
+  statisticsToggle->setToolTip(
+      tr("Speed histogram against Maxwell–Boltzmann, temperature, pressure and collision rate "
+         "against the hard-disk theory (Ctrl+3)"));
+  viewMenu->addActions({sidebarToggle, chartsToggle, statisticsToggle});
   QAction* focusBox = viewMenu->addAction(tr("&Focus the box"), QKeySequence(Qt::Key_Escape),
                                           window_.view(), qOverload<>(&QWidget::setFocus));
   focusBox->setToolTip(tr("Give the keyboard back to the box (Esc): Space pauses, '.' steps"));
   QAction* resetLayout =
       viewMenu->addAction(tr("Reset &layout"), &window_, &MainWindow::resetLayout);
-  resetLayout->setToolTip(tr("Put the settings and charts back where they were at first start"));
+  resetLayout->setToolTip(
+      tr("Put the settings and charts back where they were at first start, statistics closed"));
   viewMenu->addSeparator();
   viewMenu->addActions({temperature_, tethers_, velocityVectors_, centreOfMass_});
   viewMenu->addAction(lookFor_);
@@ -197,6 +204,8 @@ void WindowActions::applyShowOptions(const QStringList& show) {
   if (show.contains(QStringLiteral("vectors"))) velocityVectors_->setChecked(true);
   if (show.contains(QStringLiteral("centre-of-mass"))) centreOfMass_->setChecked(true);
   if (show.contains(QStringLiteral("side-by-side"))) sideBySide_->trigger();
+  // In front of the charts' tab (MainWindow::createDocks).
+  if (show.contains(QStringLiteral("statistics"))) window_.statisticsDock()->show();
 }
 
 void WindowActions::showPaused(bool paused) {

@@ -37,7 +37,7 @@ class WindowActions : public QObject {
   BenchmarkDialog* benchmarkDialog() const { return benchmarkDialog_; }
 
   /// Turns on the drawing options --show names ("temperature", "vectors", "centre-of-mass",
-  /// "side-by-side").
+  /// "side-by-side") and opens the docks it names ("statistics").
   void applyShowOptions(const QStringList& show);
   void showPaused(bool paused);
   /// Cancels a benchmark run and closes its dialog (the app quits with its main window).

@@ -10,7 +10,7 @@ class MainWindow;
 /// window's docks change: a file of another version (an older app's, or a newer one's) still
 /// gives its plain values, each checked and clamped, but not its window geometry and dock layout,
 /// which only make sense to the window that wrote them.
-inline constexpr int kSettingsVersion = 1;
+inline constexpr int kSettingsVersion = 2;  // 2: the Statistics dock
 
 /// Restores what the user chose last time (QSettings): window geometry and dock layout, drawing
 /// options, compare layout, mouse tool and speed, then keeps the window fully on a screen.

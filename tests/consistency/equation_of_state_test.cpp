@@ -1,17 +1,13 @@
 // The exact event-driven method against the theory of hard disks: a thermalised gas at packing
 // fraction 0.3 presses on the walls as Henderson's equation of state says, and collides as
-// Enskog says. What the app's statistics dock sets side by side, checked once here.
+// Enskog says: the figures the app's statistics dock sets side by side (GasMonitor), checked
+// once here.
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <numbers>
-
-#include "backend_state.h"
-#include "fooball/gas_window.h"
-#include "fooball/hard_disk_theory.h"
+#include "fooball/gas_statistics.h"
 #include "fooball/random_balls.h"
-#include "fooball/speed_distribution.h"
+#include "fooball/run_group.h"
 #include "record_measurement.h"
 #include "registry.h"
 #include "test_scenes.h"
@@ -35,42 +31,32 @@ TEST(EquationOfState, ExactGasAtPackingFractionPointThreePressesAsHendersonSays)
   spec.seed = 5;
   addRandomBalls(scene, spec);
 
-  auto backend = createBackend("exact");
-  backend->load(scene);
-  for (int k = 0; k < 180; ++k)  // 3 s: over a hundred collisions per ball
-    backend->step(kDt, {});
-
-  GasWindow window(1e9);  // the whole measurement
-  std::vector<double> masses(scene.balls.size());
-  std::vector<double> radii(scene.balls.size());
-  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
-    masses[i] = scene.balls[i].mass;
-    radii[i] = scene.balls[i].radius;
-  }
-  const auto sample = [&](double time) {
-    const BackendCounters counters = backend->counters();
-    window.add(time, counters.wallImpulse, counters.ballCollisions);
-  };
-  sample(3.0);
-  for (int k = 1; k <= 600; ++k) {  // 10 s of measurement
-    backend->step(kDt, {});
-    sample(3.0 + k * kDt);
-  }
-  const testing::State state = testing::readState(*backend);
-  const double kT = kineticTemperature(masses, state.velocities);
-  const HardDiskTheory theory = hardDiskTheory(radii, masses, scene.box, kT);
+  // Measured as the statistics dock measures it: a run group's run, and a GasMonitor whose
+  // window holds the whole measurement (the counters are cumulative, so its two ends suffice).
+  RunGroup group(scene, {RunSpec{"exact", {}}},
+                 [](const RunSpec& run) { return createBackend(run); });
+  group.setDt(kDt);
+  GasMonitor monitor(100.0);
+  const std::size_t bins = 40;  // and a range of 10 m/s: the histogram plays no part here
+  const double range = 10.0;
+  group.runFor(3.0);  // over a hundred collisions per ball
+  monitor.measure(group, bins, range);
+  group.runFor(10.0);
+  const RunGasStatistics gas = monitor.measure(group, bins, range).runs.front();
+  ASSERT_NEAR(gas.windowSpan, 10.0, 1e-9);
+  const HardDiskTheory& theory = gas.theory;
   ASSERT_NEAR(theory.packingFraction, 0.3, 1e-3);
+  EXPECT_FALSE(monitor.latest().caveats.any());
 
-  const double pressure = window.wallPressure(scene.box, scene.world.walls);
-  testing::recordMeasurement("pressure_over_henderson", pressure / theory.pressure);
-  EXPECT_NEAR(pressure / theory.pressure, 1.0, 0.03)
-      << pressure << " N/m measured, Henderson " << theory.pressure << " N/m";
+  testing::recordMeasurement("pressure_over_henderson", gas.wallPressure / theory.pressure);
+  EXPECT_NEAR(gas.wallPressure / theory.pressure, 1.0, 0.03)
+      << gas.wallPressure << " N/m measured, Henderson " << theory.pressure << " N/m";
 
-  const double rate = window.collisionRate(scene.balls.size());
-  testing::recordMeasurement("collision_rate_over_enskog", rate / theory.collisionRate);
+  testing::recordMeasurement("collision_rate_over_enskog",
+                             gas.collisionRate / theory.collisionRate);
   // Enskog's rate with Henderson's contact value: measured +0.4–0.6% here.
-  EXPECT_NEAR(rate / theory.collisionRate, 1.0, 0.03)
-      << rate << " per ball per s measured, Enskog " << theory.collisionRate;
+  EXPECT_NEAR(gas.collisionRate / theory.collisionRate, 1.0, 0.03)
+      << gas.collisionRate << " per ball per s measured, Enskog " << theory.collisionRate;
 }
 
 }  // namespace

@@ -26,9 +26,10 @@ TEST(CommandLine, ReadsEveryOption) {
 }
 
 TEST(CommandLine, ReadsDrawingOptionsAndAttractors) {
-  const CommandLine line = parse({"--show", "temperature,vectors", "--show", "side-by-side",
-                                  "--attractor", "8,4.5", "--attractor", "1.5,2"});
-  EXPECT_EQ(line.show, (QStringList{"temperature", "vectors", "side-by-side"}));
+  const CommandLine line =
+      parse({"--show", "temperature,vectors", "--show", "side-by-side,statistics", "--attractor",
+             "8,4.5", "--attractor", "1.5,2"});
+  EXPECT_EQ(line.show, (QStringList{"temperature", "vectors", "side-by-side", "statistics"}));
   ASSERT_EQ(line.attractors.size(), 2u);
   EXPECT_EQ(line.attractors[0], (Vec2{8.0, 4.5}));
   EXPECT_EQ(line.attractors[1], (Vec2{1.5, 2.0}));

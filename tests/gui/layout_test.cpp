@@ -1,7 +1,8 @@
 // The box first: at every window size from 1000×650 to 3840×2160, single run and compare mode
 // (overlay and side by side), the box's widget is larger than either dock and, in one box
 // (single run, overlay), so is the box of balls itself; the window fits 1000×650, the
-// sidebar's contents fit it, and the docks come back with View → Reset layout.
+// sidebar's contents fit it, and the docks come back with View → Reset layout. The statistics
+// dock, opened, takes the charts' place and keeps the same rule.
 
 #include <QDockWidget>
 #include <QScrollArea>
@@ -74,7 +75,8 @@ class Layout : public GuiTest {
         window->view()->compareLayout() == CompareLayout::Overlay || window->runs().runCount() == 1;
     const int box = boxArea(*window);
     const int view = area(window->view()->rect());
-    for (const QDockWidget* dock : {window->sidebarDock(), window->chartsDock()}) {
+    for (const QDockWidget* dock :
+         {window->sidebarDock(), window->chartsDock(), window->statisticsDock()}) {
       if (dock->isHidden()) continue;
       const std::string against = " against the " + dock->objectName().toStdString() + " (" +
                                   std::to_string(dock->width()) + "×" +
@@ -96,6 +98,21 @@ TEST_F(Layout, BoxIsTheLargestThingAtEverySizeAndMode) {
       openAt(size, mode);
       const std::string where = std::string(mode.name) + " at " + std::to_string(size.width()) +
                                 "×" + std::to_string(size.height());
+      EXPECT_EQ(window->size(), size) << where;
+      expectBoxLargest(where);
+    }
+  }
+}
+
+TEST_F(Layout, BoxIsTheLargestThingWithTheStatisticsOpen) {
+  for (const Mode& mode : kModes) {
+    for (const QSize size : kSizes) {
+      openAt(size, mode);
+      window->actions().applyShowOptions({QStringLiteral("statistics")});
+      settle();
+      const std::string where = std::string(mode.name) + " with statistics at " +
+                                std::to_string(size.width()) + "×" + std::to_string(size.height());
+      ASSERT_FALSE(window->statisticsDock()->isHidden()) << where;
       EXPECT_EQ(window->size(), size) << where;
       expectBoxLargest(where);
     }

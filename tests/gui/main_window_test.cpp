@@ -9,6 +9,7 @@
 #include <QStandardPaths>
 #include <QTimer>
 
+#include "charts/chart_panel.h"
 #include "fooball/version.h"
 #include "frame_loop.h"
 #include "gui_fixture.h"
@@ -104,6 +105,29 @@ TEST_F(MainWindowTest, ARememberedWindowOffTheScreenStartsFullyOnIt) {
   second.show();
   QCoreApplication::processEvents();  // the second fit, once the frame is known
   expectFullyOn(available, second);
+}
+
+TEST_F(MainWindowTest, AStatisticsDockClosedLastTimeOpensAsATabOfTheCharts) {
+  // Closed all along, or opened and closed: either way a tab of the charts when opened again.
+  for (const bool openedLastTime : {false, true}) {
+    QSettings().clear();
+    closeAfter([openedLastTime](MainWindow& previous) {
+      if (!openedLastTime) return;
+      previous.statisticsDock()->toggleViewAction()->trigger();
+      QCoreApplication::processEvents();
+      previous.statisticsDock()->toggleViewAction()->trigger();
+    });
+    MainWindow second(rememberingOptions());
+    second.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&second));
+    EXPECT_TRUE(second.statisticsDock()->isHidden());
+    second.statisticsDock()->toggleViewAction()->trigger();
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(second.tabifiedDockWidgets(second.statisticsDock()).contains(second.chartsDock()))
+        << "not beside the charts, squeezing them; opened last time: " << openedLastTime;
+    EXPECT_TRUE(second.charts()->mapTo(&second, QPoint()).y() < 0)
+        << "in front of the charts' tab; opened last time: " << openedLastTime;
+  }
 }
 
 TEST_F(MainWindowTest, AFirstStartFitsTheDefaultSizeToASmallScreen) {

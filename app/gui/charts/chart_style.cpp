@@ -1,6 +1,11 @@
 #include "chart_style.h"
 
+#include <QChart>
+#include <QFont>
+#include <QGraphicsLayout>
+#include <QLegend>
 #include <QList>
+#include <QValueAxis>
 #include <array>
 
 #include "fooball/run_group.h"
@@ -87,6 +92,71 @@ QPen curvePen(Quantity quantity, int runIndex, bool colourByRun) {
     pen.setDashPattern(look.rank == 1 ? QList<qreal>{6.0, 3.0} : QList<qreal>{1.5, 2.5});
   }
   return pen;
+}
+
+QFont sizedFont(const QFont& base, double pointSize, bool bold) {
+  QFont font = base;
+  font.setPointSizeF(pointSize);
+  font.setBold(bold);
+  return font;
+}
+
+void styleChart(QChart* chart, const QString& title, const QFont& baseFont) {
+  // The theme first: it restyles everything already in the chart.
+  chart->setTheme(QChart::ChartThemeDark);
+  chart->setAnimationOptions(QChart::NoAnimation);
+  chart->setBackgroundBrush(chart_colours::kBackground);
+  chart->setBackgroundRoundness(0.0);
+  chart->setPlotAreaBackgroundBrush(chart_colours::kPlotArea);
+  chart->setPlotAreaBackgroundVisible(true);
+  chart->layout()->setContentsMargins(0, 0, 0, 0);
+  chart->setTitle(title);
+  chart->setTitleFont(sizedFont(baseFont, 9.0, true));
+  chart->setTitleBrush(chart_colours::kTitle);
+
+  QLegend* legend = chart->legend();
+  legend->setAlignment(Qt::AlignTop);
+  legend->setFont(sizedFont(baseFont, 8.0));
+  legend->setLabelColor(chart_colours::kLabel);
+  legend->setMarkerShape(QLegend::MarkerShapeFromSeries);
+}
+
+void styleAxis(QAbstractAxis* axis, const QFont& baseFont) {
+  axis->setLabelsFont(sizedFont(baseFont, 8.0));
+  axis->setLabelsBrush(chart_colours::kLabel);
+  axis->setTitleFont(sizedFont(baseFont, 8.0));
+  axis->setTitleBrush(chart_colours::kLabel);
+  // One-pixel pens: Qt draws those directly instead of stroking an outline each frame.
+  axis->setGridLinePen(QPen(chart_colours::kGrid, 1.0));
+  axis->setLinePen(QPen(chart_colours::kAxisLine, 1.0));
+  axis->setMinorGridLineVisible(false);
+  axis->setShadesVisible(false);
+}
+
+void styleAxis(QValueAxis* axis, const QFont& baseFont) {
+  axis->setTickType(QValueAxis::TicksDynamic);
+  axis->setTickAnchor(0.0);
+  styleAxis(static_cast<QAbstractAxis*>(axis), baseFont);
+}
+
+void applyScale(QValueAxis* axis, const AxisScale& scale, const QString& labelFormat) {
+  // Every change relays the ticks out: in between, the new range must not meet the old, finer
+  // interval (a range 10⁵ times wider would create 10⁵ tick items). Widen the interval before
+  // the range, narrow it after.
+  if (axis->tickType() != QValueAxis::TicksDynamic) {
+    // Fixed ticks (a chart sets them while it swaps series, as attaching one resets the
+    // range) are a handful whatever the range: set both, then go back to ticks at round values.
+    axis->setRange(scale.min, scale.max);
+    axis->setTickInterval(scale.tickInterval);
+    axis->setTickType(QValueAxis::TicksDynamic);
+  } else if (scale.tickInterval >= axis->tickInterval()) {
+    axis->setTickInterval(scale.tickInterval);
+    axis->setRange(scale.min, scale.max);
+  } else {
+    axis->setRange(scale.min, scale.max);
+    axis->setTickInterval(scale.tickInterval);
+  }
+  axis->setLabelFormat(labelFormat);
 }
 
 QString quantityName(Quantity quantity) {

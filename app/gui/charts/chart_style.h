@@ -4,7 +4,13 @@
 #include <QPen>
 #include <QString>
 
+#include "axis_scale.h"
 #include "chart_sample.h"
+
+class QAbstractAxis;
+class QChart;
+class QFont;
+class QValueAxis;
 
 namespace fooball::gui {
 
@@ -25,6 +31,21 @@ QPen baselinePen();
 
 /// The short name of a quantity in a legend: "px", "kinetic", …
 QString quantityName(Quantity quantity);
+
+/// `base` at `pointSize`: the charts' titles are 9 pt bold, their legends and axes 8 pt.
+QFont sizedFont(const QFont& base, double pointSize, bool bold = false);
+/// The look every live chart shares: the dark theme, the colours below, no animation, no
+/// layout margins, `title` in 9 pt bold and the legend on top in 8 pt. The chart's own margins
+/// are the caller's.
+void styleChart(QChart* chart, const QString& title, const QFont& baseFont);
+/// Axis labels and titles in 8 pt grey, one-pixel grid and axis lines, no minor grid.
+void styleAxis(QAbstractAxis* axis, const QFont& baseFont);
+/// The same, with ticks at round values from 0 (TicksDynamic, anchored at 0).
+void styleAxis(QValueAxis* axis, const QFont& baseFont);
+
+/// Sets `axis` to `scale` with tick labels in `labelFormat` (printf style). In between, the new
+/// range never meets the old, finer interval, which could make 10⁵ tick items.
+void applyScale(QValueAxis* axis, const AxisScale& scale, const QString& labelFormat);
 
 /// The colours around the curves: a near-black plot like the simulation view, grey text.
 namespace chart_colours {

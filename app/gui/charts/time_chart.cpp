@@ -2,7 +2,6 @@
 
 #include <QChart>
 #include <QFontMetricsF>
-#include <QGraphicsLayout>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
 #include <QLegendMarker>
@@ -32,31 +31,6 @@ constexpr double kMinPlotHeight = 2.0 * kPixelsPerValueTick;
 constexpr double kLayoutSpacing = 46.0;
 constexpr double kAxisTitleSpacing = 8.0;
 
-QFont sizedFont(const QFont& base, double pointSize, bool bold = false) {
-  QFont font = base;
-  font.setPointSizeF(pointSize);
-  font.setBold(bold);
-  return font;
-}
-
-void styleAxis(QAbstractAxis* axis, const QFont& baseFont) {
-  axis->setLabelsFont(sizedFont(baseFont, 8.0));
-  axis->setLabelsBrush(chart_colours::kLabel);
-  axis->setTitleFont(sizedFont(baseFont, 8.0));
-  axis->setTitleBrush(chart_colours::kLabel);
-  // One-pixel pens: Qt draws those directly instead of stroking an outline each frame.
-  axis->setGridLinePen(QPen(chart_colours::kGrid, 1.0));
-  axis->setLinePen(QPen(chart_colours::kAxisLine, 1.0));
-  axis->setMinorGridLineVisible(false);
-  axis->setShadesVisible(false);
-}
-
-void styleAxis(QValueAxis* axis, const QFont& baseFont) {
-  axis->setTickType(QValueAxis::TicksDynamic);
-  axis->setTickAnchor(0.0);
-  styleAxis(static_cast<QAbstractAxis*>(axis), baseFont);
-}
-
 void applyScale(QLogValueAxis* axis, const LogAxisScale& scale) {
   // Labels sit at the powers of the base: a base of 10^k labels every k-th decade. As with a
   // linear axis' interval, the base grows before the range and shrinks after it, so no layout
@@ -69,26 +43,6 @@ void applyScale(QLogValueAxis* axis, const LogAxisScale& scale) {
     axis->setRange(scale.min(), scale.max());
     axis->setBase(base);
   }
-}
-
-void applyScale(QValueAxis* axis, const AxisScale& scale, const QString& labelFormat) {
-  // Every change relays the ticks out: in between, the new range must not meet the old, finer
-  // interval (a range 10⁵ times wider would create 10⁵ tick items). Widen the interval before
-  // the range, narrow it after.
-  if (axis->tickType() != QValueAxis::TicksDynamic) {
-    // Fixed ticks (see TimeChart::setOwners) are a handful whatever the range: set both, then
-    // go back to ticks at round values.
-    axis->setRange(scale.min, scale.max);
-    axis->setTickInterval(scale.tickInterval);
-    axis->setTickType(QValueAxis::TicksDynamic);
-  } else if (scale.tickInterval >= axis->tickInterval()) {
-    axis->setTickInterval(scale.tickInterval);
-    axis->setRange(scale.min, scale.max);
-  } else {
-    axis->setRange(scale.min, scale.max);
-    axis->setTickInterval(scale.tickInterval);
-  }
-  axis->setLabelFormat(labelFormat);
 }
 
 }  // namespace
@@ -110,24 +64,8 @@ TimeChart::TimeChart(const QString& title, std::vector<Quantity> quantities,
     linearAxis_ = new QValueAxis(chart_);
     valueAxis_ = linearAxis_;
   }
-  // The theme first: it restyles everything already in the chart.
-  chart_->setTheme(QChart::ChartThemeDark);
-  chart_->setAnimationOptions(QChart::NoAnimation);
-  chart_->setBackgroundBrush(chart_colours::kBackground);
-  chart_->setBackgroundRoundness(0.0);
-  chart_->setPlotAreaBackgroundBrush(chart_colours::kPlotArea);
-  chart_->setPlotAreaBackgroundVisible(true);
-  chart_->layout()->setContentsMargins(0, 0, 0, 0);
+  styleChart(chart_, title, font());
   chart_->setMargins(kChartMargins);
-  chart_->setTitle(title);
-  chart_->setTitleFont(sizedFont(font(), 9.0, true));
-  chart_->setTitleBrush(chart_colours::kTitle);
-
-  QLegend* legend = chart_->legend();
-  legend->setAlignment(Qt::AlignTop);
-  legend->setFont(sizedFont(font(), 8.0));
-  legend->setLabelColor(chart_colours::kLabel);
-  legend->setMarkerShape(QLegend::MarkerShapeFromSeries);
 
   chart_->addAxis(timeAxis_, Qt::AlignBottom);
   chart_->addAxis(valueAxis_, Qt::AlignLeft);
