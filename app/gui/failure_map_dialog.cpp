@@ -36,6 +36,7 @@ FailureMapDialog::FailureMapDialog(QWidget* parent)
 
   shownSweep_ = new QComboBox;
   shownSweep_->setToolTip(tr("The sweep the charts show"));
+  shownSweep_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   connect(shownSweep_, &QComboBox::currentTextChanged, this, &FailureMapDialog::showSweep);
   auto* shownLabel = new QLabel(tr("S&weep shown:"));
   shownLabel->setBuddy(shownSweep_);
@@ -62,9 +63,12 @@ QWidget* FailureMapDialog::createSettings() {
     titles.append(fromView(spec.title));
   }
   sweeps_ = newChecklist(names, titles, tr("The sweeps to run, one after another"));
-  form->addRow(tr("S&weeps:"), sweeps_);
   backends_ = newBackendChecklist(tr("The backends each sweep runs on, at their defaults"));
-  form->addRow(tr("&Backends:"), backends_);
+  // Side by side: the charts need the height.
+  auto* lists = new QHBoxLayout;
+  lists->addWidget(sweeps_);
+  lists->addWidget(backends_);
+  form->addRow(tr("Sweeps and backends:"), lists);
   quick_ = new QCheckBox(tr("&Quick: coarser grids and shorter scenes"));
   quick_->setChecked(true);
   quick_->setToolTip(tr("As failure-map --quick: seconds instead of minutes"));

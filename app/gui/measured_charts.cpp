@@ -16,6 +16,7 @@ MeasuredCharts::MeasuredCharts(const QString& placeholder, QWidget* parent) : QW
   title_ = new QLabel;
   title_->setWordWrap(true);
   title_->setAlignment(Qt::AlignHCenter);
+  title_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);  // the charts get the rest
   placeholder_ = new QLabel(placeholder);
   placeholder_->setWordWrap(true);
   placeholder_->setAlignment(Qt::AlignCenter);
