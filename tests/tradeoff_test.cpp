@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stop_token>
+#include <string>
+#include <vector>
 
 #include "fooball/presets.h"
 #include "pareto.h"
@@ -109,6 +112,26 @@ TEST(MeasureTradeoff, TheExactBackendMatchesItselfAndTheElasticOneComesClose) {
 TEST(MeasureTradeoff, RejectsUnknownOptionsBeforeRunningAnything) {
   const TradeoffSetting grid[] = {{"elastic", {"no_such_option=1"}}};
   EXPECT_THROW(measureTradeoff(loadPreset("head-on"), grid, {}), std::invalid_argument);
+}
+
+TEST(MeasureTradeoff, AStopRequestEndsTheRunAfterTheSettingUnderWay) {
+  const TradeoffSetting grid[] = {
+      {"elastic", {"substeps=1"}}, {"elastic", {"substeps=2"}}, {"elastic", {"substeps=4"}}};
+  TradeoffSettings settings;
+  settings.duration = 0.2;
+  settings.timingRepeats = 1;
+  std::stop_source stop;
+  int reports = 0;
+  const std::vector<TradeoffPoint> points = measureTradeoff(
+      loadPreset("head-on"), grid, settings,
+      [&](const TradeoffProgress&) {
+        ++reports;
+        stop.request_stop();  // as Cancel does while the first setting is reported
+      },
+      stop.get_token());
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_EQ(reports, 1);
+  EXPECT_EQ(points[0].setting.options, std::vector<std::string>{"substeps=1"});
 }
 
 TEST(ChaosGrowth, IsOneWhereNothingCollides) {

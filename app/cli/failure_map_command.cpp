@@ -1,7 +1,9 @@
 #include "failure_map_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "boundary.h"
@@ -91,22 +93,22 @@ void failureMapCommand(const FailureMapOptions& options, std::ostream& out) {
   }
 
   StatusLine status(!options.quiet && ProgressLine::stderrIsTerminal());
-  std::vector<SweepPoint> all;
+  const auto progress = [&](const failure_map::FailureMapProgress& at) {
+    status.show(std::string(at.sweep->name) + " on " + std::string(at.backend));
+  };
+  const std::vector<SweepPoint> all =
+      failure_map::runFailureMap(sweeps, backends, options.quick, progress);
+  status.clear();
   TextTable table;
   for (const SweepSpec* spec : sweeps) {
     std::vector<SweepPoint> points;
-    for (const BackendInfo& backend : backends) {
-      status.show(std::string(spec->name) + " on " + std::string(backend.name));
-      const std::vector<SweepPoint> own = failure_map::runSweep(*spec, backend.name, options.quick);
-      points.insert(points.end(), own.begin(), own.end());
-    }
-    status.clear();
+    std::copy_if(all.begin(), all.end(), std::back_inserter(points),
+                 [&](const SweepPoint& point) { return point.sweep == spec->name; });
     printSweep(*spec, points, table);
     if (options.chartDir) {
       plots::saveFailureMapChart(
           *spec, points, *options.chartDir / ("failure-" + std::string(spec->name) + ".png"));
     }
-    all.insert(all.end(), points.begin(), points.end());
   }
   if (!options.quiet) table.print(out, 2);
   if (options.csvPath) writeCsv(*options.csvPath, all);

@@ -10,7 +10,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLegend>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPixmap>
@@ -27,6 +26,8 @@
 #include <stdexcept>
 
 #include "capacity_chart_builder.h"
+#include "checklist.h"
+#include "dark_theme.h"
 #include "registry.h"
 #include "view_text.h"
 
@@ -41,28 +42,6 @@ QString noteOf(const measure::SearchOutcome& outcome) {
   if (outcome.reachedMaxBalls) return QObject::tr("the scene format's limit: capacity is higher");
   if (outcome.timedOut) return QObject::tr("time limit: best count so far");
   return {};
-}
-
-/// The capacity chart (light, as `fooball-cli capacity --chart` draws it for pages) in the app's
-/// dark theme; the series keep their colours.
-void styleDark(QChart& chart) {
-  const QColor background(0x16, 0x17, 0x1c);
-  const QColor plotArea(0x05, 0x05, 0x07);
-  const QColor text(0xe6, 0xe7, 0xeb);
-  const QColor label(0xb4, 0xb7, 0xc0);
-  const QColor grid(0x2c, 0x2e, 0x36);
-  chart.setBackgroundBrush(background);
-  chart.setPlotAreaBackgroundBrush(plotArea);
-  chart.setPlotAreaBackgroundVisible(true);
-  chart.setTitleBrush(text);
-  chart.legend()->setLabelColor(label);
-  for (QAbstractAxis* axis : chart.axes()) {
-    axis->setLabelsColor(label);
-    axis->setTitleBrush(text);
-    axis->setGridLineColor(grid);
-    axis->setMinorGridLineColor(grid);
-    axis->setLinePenColor(label);
-  }
 }
 
 }  // namespace
@@ -135,15 +114,7 @@ QWidget* BenchmarkDialog::createSettings() {
   auto* form = new QFormLayout(settings);
   form->setContentsMargins(0, 0, 0, 0);
 
-  backends_ = new QListWidget;
-  backends_->setToolTip(tr("The backends to measure, one after another"));
-  for (const BackendInfo& info : registeredBackends()) {
-    auto* item = new QListWidgetItem(fromView(info.name), backends_);
-    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-    item->setCheckState(Qt::Checked);
-    item->setToolTip(fromView(info.description));
-  }
-  backends_->setMaximumHeight(backends_->sizeHintForRow(0) * (backends_->count() + 1));
+  backends_ = newBackendChecklist(tr("The backends to measure, one after another"));
   form->addRow(tr("&Backends:"), backends_);
 
   budget_ = new QLineEdit(QString::number(measure::CapacitySettings{}.budgetMs, 'g', 4));
@@ -228,11 +199,7 @@ measure::CapacitySettings BenchmarkDialog::settingsFromFields(
   if (!isNumber) settings.budgetMs = std::numeric_limits<double>::quiet_NaN();
   for (const QString& option : options_->text().split(QLatin1Char(' '), Qt::SkipEmptyParts))
     settings.options.push_back(option.toStdString());
-  for (const BackendInfo& info : registeredBackends()) {
-    const QList<QListWidgetItem*> items =
-        backends_->findItems(fromView(info.name), Qt::MatchExactly);
-    if (!items.isEmpty() && items.front()->checkState() == Qt::Checked) chosen.push_back(info);
-  }
+  chosen = checkedBackends(*backends_);
   return settings;
 }
 
@@ -380,7 +347,7 @@ void BenchmarkDialog::showChart(std::span<const measure::CapacityResult> results
                               : tr("Press Start: each backend's step time appears here as each "
                                    "ball count is measured"));
   }
-  styleDark(*chart);
+  styleChartDark(*chart);
   chartView_->setChart(chart);  // the view owns the new chart and gives the old one back
   delete previous;
 }

@@ -1,6 +1,9 @@
 #include "dark_theme.h"
 
+#include <QAbstractAxis>
 #include <QApplication>
+#include <QChart>
+#include <QLegend>
 #include <QPainter>
 #include <QProxyStyle>
 #include <QStyleFactory>
@@ -104,6 +107,26 @@ void applyDarkTheme(QApplication& app) {
   const QPalette palette = darkPalette();
   QApplication::setPalette(palette);
   QToolTip::setPalette(palette);
+}
+
+void styleChartDark(QChart& chart) {
+  const QColor background(0x16, 0x17, 0x1c);
+  const QColor plotArea(0x05, 0x05, 0x07);
+  const QColor text(0xe6, 0xe7, 0xeb);
+  const QColor label(0xb4, 0xb7, 0xc0);
+  const QColor grid(0x2c, 0x2e, 0x36);
+  chart.setBackgroundBrush(background);
+  chart.setPlotAreaBackgroundBrush(plotArea);
+  chart.setPlotAreaBackgroundVisible(true);
+  chart.setTitleBrush(text);
+  chart.legend()->setLabelColor(label);
+  for (QAbstractAxis* axis : chart.axes()) {
+    axis->setLabelsColor(label);
+    axis->setTitleBrush(text);
+    axis->setGridLineColor(grid);
+    axis->setMinorGridLineColor(grid);
+    axis->setLinePenColor(label);
+  }
 }
 
 double contrastRatio(const QColor& a, const QColor& b) {

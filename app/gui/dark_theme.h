@@ -3,6 +3,7 @@
 #include <QPalette>
 
 class QApplication;
+class QChart;
 
 namespace fooball::gui {
 
@@ -14,6 +15,10 @@ QPalette darkPalette();
 
 /// Sets that style and darkPalette() on `app`: once, at startup, before any window exists.
 void applyDarkTheme(QApplication& app);
+
+/// A chart the app shares with fooball-cli (light, as the CLI draws it for pages) in the app's
+/// dark theme; the series keep their colours.
+void styleChartDark(QChart& chart);
 
 /// WCAG's contrast ratio of two colours, 1 (the same) to 21 (black on white): body text needs
 /// at least 4.5.

@@ -104,8 +104,8 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
 
 MainWindow::~MainWindow() {
   // The widgets go first: they refer to the runs, and a field losing focus as it is destroyed
-  // still reports an edit. The benchmark first of all: it stops and joins its thread.
-  actions_->destroyBenchmark();
+  // still reports an edit. The Tools' dialogs first of all: they stop and join their threads.
+  actions_->destroyTools();
   delete sidebarDock_;
   delete chartsDock_;
   delete statisticsDock_;
@@ -407,7 +407,7 @@ void MainWindow::showEvent(QShowEvent* event) {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   if (rememberSettings_) writeWindowSettings(*this);
-  actions_->closeBenchmark();  // cancels a run: the app quits with its main window
+  actions_->closeTools();  // cancels their runs: the app quits with its main window
   event->accept();
 }
 

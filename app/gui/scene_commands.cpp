@@ -3,14 +3,20 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QUndoStack>
+#include <algorithm>
 #include <exception>
+#include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
 #include "main_window.h"
+#include "registry.h"
 #include "run_controller.h"
 #include "settings_sidebar.h"
+#include "tradeoff.h"
 
 namespace fooball::gui {
 
@@ -97,6 +103,28 @@ bool setBallCount(MainWindow& window, std::size_t count) {
             .arg(count - before)
             .arg(100.0 * scale, 0, 'g', 2));
   }
+  return true;
+}
+
+bool openConfiguration(MainWindow& window, const Configuration& configuration) {
+  const std::string_view reference = measure::kReferenceBackend;
+  const bool hasReference = std::ranges::any_of(
+      registeredBackends(), [&](const BackendInfo& info) { return info.name == reference; });
+  try {
+    createBackend(configuration.spec);  // checks the spec before anything changes
+  } catch (const std::invalid_argument& error) {
+    window.showStatus(QString::fromStdString(error.what()));
+    return false;
+  }
+  window.loadScene(configuration.scene, configuration.presetName, configuration.sourceName);
+  RunController& runs = window.runs();
+  while (runs.runCount() > 1)
+    runs.removeRun(runs.runCount() - 1);
+  runs.setRunSpec(0, configuration.spec);
+  if (hasReference && configuration.spec.backend != reference)
+    runs.addRun(RunSpec{std::string(reference), {}});
+  window.showStatus(QObject::tr("Opened %1 on %2")
+                        .arg(configuration.sourceName, runs.labels().join(QObject::tr(" vs "))));
   return true;
 }
 

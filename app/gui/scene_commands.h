@@ -3,6 +3,9 @@
 #include <QString>
 #include <cstddef>
 
+#include "fooball/run_spec.h"
+#include "fooball/scene.h"
+
 namespace fooball::gui {
 
 class MainWindow;
@@ -17,5 +20,18 @@ bool saveSceneFile(MainWindow& window, const QString& path);
 bool openPreset(MainWindow& window, const QString& name);
 /// As the spinner: balls added where there is room in every run, or the newest removed.
 bool setBallCount(MainWindow& window, std::size_t count);
+
+/// A point of a Tools chart: the scene it was measured on and the method that measured it.
+struct Configuration {
+  Scene scene;         ///< valid
+  QString presetName;  ///< the preset the scene is, if it is one
+  QString sourceName;  ///< how the title names the scene, e.g. "tunnelling sweep, v·h/r = 2.8"
+  RunSpec spec;        ///< run 0's
+};
+
+/// Loads the configuration's scene with run 0 on its spec and, unless that spec is on the
+/// reference backend (measure::kReferenceBackend) or there is none, a compare run on the
+/// reference at its defaults. A bad spec is reported and nothing changes.
+bool openConfiguration(MainWindow& window, const Configuration& configuration);
 
 }  // namespace fooball::gui

@@ -11,6 +11,7 @@
 #include "ball_commands.h"
 #include "benchmark_dialog.h"
 #include "charts/chart_panel.h"
+#include "failure_map_dialog.h"
 #include "help_dialogs.h"
 #include "main_window.h"
 #include "run_controller.h"
@@ -19,6 +20,7 @@
 #include "settings_sidebar.h"
 #include "sidebar_wiring.h"
 #include "simulation_view.h"
+#include "tradeoff_dialog.h"
 
 namespace fooball::gui {
 
@@ -187,6 +189,13 @@ void WindowActions::createMenus() {
   benchmark_ = tools->addAction(tr("&Benchmark…"), this, &WindowActions::openBenchmark);
   benchmark_->setToolTip(
       tr("Measure how many balls each backend steps within a time budget (fooball-cli capacity)"));
+  tradeoff_ = tools->addAction(tr("&Speed vs accuracy…"), this, &WindowActions::openTradeoff);
+  tradeoff_->setToolTip(
+      tr("Measure what each backend's settings cost and get wrong on a scene "
+         "(fooball-cli tradeoff)"));
+  failureMap_ = tools->addAction(tr("&Failure map…"), this, &WindowActions::openFailureMap);
+  failureMap_->setToolTip(
+      tr("Find where each method starts to fail as scenes get harder (fooball-cli failure-map)"));
 
   QMenu* help = bar->addMenu(tr("&Help"));
   help->addAction(tr("&Mouse and keys"), QKeySequence::HelpContents, this,
@@ -264,32 +273,78 @@ void WindowActions::exportChartsCsv() {
   }
 }
 
+namespace {
+
+void showTool(QDialog* dialog) {
+  dialog->show();
+  dialog->raise();
+  dialog->activateWindow();
+}
+
+}  // namespace
+
 void WindowActions::openBenchmark() {
   if (!benchmarkDialog_) {
     benchmarkDialog_ = new BenchmarkDialog(&window_);
-    // The measurements and the simulation would share the CPU: the runs pause meanwhile.
-    connect(benchmarkDialog_, &BenchmarkDialog::runStarted, this, [this] {
-      pausedForBenchmark_ = !window_.runs().paused();
-      if (pausedForBenchmark_) window_.runs().setPaused(true);
-      window_.showStatus(tr("Paused while the benchmark runs"));
-    });
-    connect(benchmarkDialog_, &BenchmarkDialog::runFinished, this, [this] {
-      if (pausedForBenchmark_) window_.runs().setPaused(false);
-      pausedForBenchmark_ = false;
-    });
+    connect(benchmarkDialog_, &BenchmarkDialog::runStarted, this, &WindowActions::toolRunStarted);
+    connect(benchmarkDialog_, &BenchmarkDialog::runFinished, this, &WindowActions::toolRunFinished);
   }
-  benchmarkDialog_->show();
-  benchmarkDialog_->raise();
-  benchmarkDialog_->activateWindow();
+  showTool(benchmarkDialog_);
 }
 
-void WindowActions::closeBenchmark() {
-  if (benchmarkDialog_) benchmarkDialog_->close();
+void WindowActions::openTradeoff() {
+  if (!tradeoffDialog_) {
+    tradeoffDialog_ = new TradeoffDialog(&window_);
+    connectTool(tradeoffDialog_);
+  }
+  showTool(tradeoffDialog_);
 }
 
-void WindowActions::destroyBenchmark() {
+void WindowActions::openFailureMap() {
+  if (!failureMapDialog_) {
+    failureMapDialog_ = new FailureMapDialog(&window_);
+    connectTool(failureMapDialog_);
+  }
+  showTool(failureMapDialog_);
+}
+
+void WindowActions::connectTool(ToolDialog* dialog) {
+  connect(dialog, &ToolDialog::runStarted, this, &WindowActions::toolRunStarted);
+  connect(dialog, &ToolDialog::runFinished, this, &WindowActions::toolRunFinished);
+  connect(dialog, &ToolDialog::openRequested, this, [this](const Configuration& configuration) {
+    openConfiguration(window_, configuration);
+  });
+}
+
+void WindowActions::toolRunStarted() {
+  // The measurements and the simulation would share the CPU: the runs pause meanwhile.
+  if (toolRuns_++ == 0) {
+    pausedForTools_ = !window_.runs().paused();
+    if (pausedForTools_) window_.runs().setPaused(true);
+  }
+  window_.showStatus(tr("Paused while the measurement runs"));
+}
+
+void WindowActions::toolRunFinished() {
+  if (--toolRuns_ > 0) return;
+  if (pausedForTools_) window_.runs().setPaused(false);
+  pausedForTools_ = false;
+}
+
+void WindowActions::closeTools() {
+  for (QDialog* dialog :
+       std::initializer_list<QDialog*>{benchmarkDialog_, tradeoffDialog_, failureMapDialog_}) {
+    if (dialog) dialog->close();
+  }
+}
+
+void WindowActions::destroyTools() {
   delete benchmarkDialog_;
   benchmarkDialog_ = nullptr;
+  delete tradeoffDialog_;
+  tradeoffDialog_ = nullptr;
+  delete failureMapDialog_;
+  failureMapDialog_ = nullptr;
 }
 
 }  // namespace fooball::gui

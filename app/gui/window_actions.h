@@ -8,6 +8,9 @@ class QAction;
 namespace fooball::gui {
 
 class BenchmarkDialog;
+class FailureMapDialog;
+class ToolDialog;
+class TradeoffDialog;
 class MainWindow;
 
 /// The window's menus and the actions in them: File (scenes, chart export), Simulation (pause,
@@ -35,15 +38,22 @@ class WindowActions : public QObject {
   QAction* benchmark() const { return benchmark_; }
   /// Tools → Benchmark's dialog; none until first opened.
   BenchmarkDialog* benchmarkDialog() const { return benchmarkDialog_; }
+  QAction* tradeoff() const { return tradeoff_; }
+  /// Tools → Speed vs accuracy's dialog; none until first opened.
+  TradeoffDialog* tradeoffDialog() const { return tradeoffDialog_; }
+  QAction* failureMap() const { return failureMap_; }
+  /// Tools → Failure map's dialog; none until first opened.
+  FailureMapDialog* failureMapDialog() const { return failureMapDialog_; }
 
   /// Turns on the drawing options --show names ("temperature", "vectors", "centre-of-mass",
   /// "side-by-side") and opens the docks it names ("statistics").
   void applyShowOptions(const QStringList& show);
   void showPaused(bool paused);
-  /// Cancels a benchmark run and closes its dialog (the app quits with its main window).
-  void closeBenchmark();
-  /// Deletes the dialog, which stops and joins its thread (before the window's widgets go).
-  void destroyBenchmark();
+  /// Cancels the Tools' runs and closes their dialogs (the app quits with its main window).
+  void closeTools();
+  /// Deletes the Tools' dialogs, which stop and join their threads (before the window's
+  /// widgets go).
+  void destroyTools();
   /// File → Export charts as PNG to `path`, under a caption naming the scene and the runs; says
   /// how it went in the status bar or an error.
   bool exportChartsPngTo(const QString& path);
@@ -60,6 +70,14 @@ class WindowActions : public QObject {
   void exportChartsPng();
   void exportChartsCsv();
   void openBenchmark();
+  void openTradeoff();
+  void openFailureMap();
+  /// Wires a Tools dialog to the window: its runs pause the simulation, its points open.
+  void connectTool(ToolDialog* dialog);
+  /// A Tools run starts or ends: the simulation pauses while any runs (both would share the
+  /// CPU) and continues after the last, unless it was paused before.
+  void toolRunStarted();
+  void toolRunFinished();
 
   MainWindow& window_;
   QAction* pause_ = nullptr;
@@ -76,7 +94,12 @@ class WindowActions : public QObject {
   QAction* sideBySide_ = nullptr;
   QAction* benchmark_ = nullptr;
   BenchmarkDialog* benchmarkDialog_ = nullptr;
-  bool pausedForBenchmark_ = false;  ///< the benchmark paused the runs and continues them
+  QAction* tradeoff_ = nullptr;
+  TradeoffDialog* tradeoffDialog_ = nullptr;
+  QAction* failureMap_ = nullptr;
+  FailureMapDialog* failureMapDialog_ = nullptr;
+  int toolRuns_ = 0;             ///< Tools runs going
+  bool pausedForTools_ = false;  ///< the Tools paused the runs and continue them
 };
 
 }  // namespace fooball::gui

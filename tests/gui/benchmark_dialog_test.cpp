@@ -25,22 +25,6 @@
 namespace fooball::gui::testing {
 namespace {
 
-/// Sanitizers slow the measured steps several-fold; the bounds below are for wall time.
-double slowdown() {
-  return qEnvironmentVariableIsSet("FOOBALL_SANITIZED") ? 5.0 : 1.0;
-}
-
-/// Processes events until `done` or `seconds` pass; whether `done` came true.
-bool waitUntil(const std::function<bool()>& done, double seconds) {
-  QElapsedTimer clock;
-  clock.start();
-  while (!done()) {
-    if (double(clock.elapsed()) > 1000.0 * seconds) return false;
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-  }
-  return true;
-}
-
 class Benchmark : public GuiTest {
  protected:
   BenchmarkDialog* openDialog() {

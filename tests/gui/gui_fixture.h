@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QPoint>
 #include <QStringList>
 #include <QtTest/QTest>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -63,6 +66,22 @@ class GuiTest : public ::testing::Test {
   std::unique_ptr<MainWindow> window;
   QStringList errors;
 };
+
+/// Sanitizers slow the measured steps several-fold; the bounds on wall time allow for it.
+inline double slowdown() {
+  return qEnvironmentVariableIsSet("FOOBALL_SANITIZED") ? 5.0 : 1.0;
+}
+
+/// Processes events until `done` or `seconds` pass; whether `done` came true.
+inline bool waitUntil(const std::function<bool()>& done, double seconds) {
+  QElapsedTimer clock;
+  clock.start();
+  while (!done()) {
+    if (double(clock.elapsed()) > 1000.0 * seconds) return false;
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+  }
+  return true;
+}
 
 /// A few still balls, well apart, in a 16 × 9 m box without gravity.
 inline Scene stillBalls() {

@@ -19,7 +19,8 @@ constexpr int kBalls = 5;
 /// Where a touching row sits on the chart's log axis (gap / r).
 constexpr double kTouchingDrawnAt = 1e-5;
 
-double cradleError(std::string_view backend, double gap) {
+/// The row with `gap` (m) between resting balls, run: its error, not yet its variant or parameter.
+SweepPoint cradleRun(std::string_view backend, double gap) {
   Scene scene;
   scene.name = "cradle";
   scene.box = {6.0, 1.0};
@@ -35,7 +36,10 @@ double cradleError(std::string_view backend, double gap) {
   double error = length(run.velocities[kBalls - 1] - Vec2{kSpeed, 0.0});
   for (int ball = 0; ball < kBalls - 1; ++ball)
     error += length(run.velocities[ball]);
-  return error / kSpeed;
+  SweepPoint point;
+  point.error = error / kSpeed;
+  point.scene = scene;
+  return point;
 }
 
 }  // namespace
@@ -43,10 +47,13 @@ double cradleError(std::string_view backend, double gap) {
 std::vector<SweepPoint> cradleSweep(std::string_view backend, bool quick) {
   std::vector<SweepPoint> points;
   for (const double gapPerRadius : logGrid(1.0, 1e-4, quick ? 5 : 9)) {
-    points.push_back(
-        measuredPoint("gaps", gapPerRadius, cradleError(backend, gapPerRadius * kRadius)));
+    points.push_back(cradleRun(backend, gapPerRadius * kRadius));
+    points.back().parameter = gapPerRadius;
   }
-  points.push_back(measuredPoint("gaps", kTouchingDrawnAt, cradleError(backend, 0.0)));
+  points.push_back(cradleRun(backend, 0.0));
+  points.back().parameter = kTouchingDrawnAt;
+  for (SweepPoint& point : points)
+    point.variant = "gaps";
   return points;
 }
 

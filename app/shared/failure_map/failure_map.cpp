@@ -59,4 +59,22 @@ std::vector<SweepPoint> runSweep(const SweepSpec& spec, std::string_view backend
   return points;
 }
 
+std::vector<SweepPoint> runFailureMap(
+    std::span<const SweepSpec* const> sweeps, std::span<const BackendInfo> backends, bool quick,
+    const std::function<void(const FailureMapProgress&)>& progress, std::stop_token stop) {
+  std::vector<SweepPoint> all;
+  const double total = static_cast<double>(sweeps.size() * backends.size());
+  double done = 0.0;
+  for (const SweepSpec* spec : sweeps) {
+    for (const BackendInfo& backend : backends) {
+      if (stop.stop_requested()) return all;
+      if (progress) progress({spec, backend.name, done / total});
+      const std::vector<SweepPoint> own = runSweep(*spec, backend.name, quick);
+      all.insert(all.end(), own.begin(), own.end());
+      done += 1.0;
+    }
+  }
+  return all;
+}
+
 }  // namespace fooball::failure_map

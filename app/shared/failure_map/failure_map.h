@@ -1,9 +1,12 @@
 #pragma once
 
+#include <functional>
 #include <span>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
+#include "registry.h"
 #include "sweep_point.h"
 
 namespace fooball::failure_map {
@@ -30,5 +33,19 @@ const SweepSpec& findSweep(std::string_view name);
 
 /// Runs `spec` on `backend` and judges every point against the spec's limits.
 std::vector<SweepPoint> runSweep(const SweepSpec& spec, std::string_view backend, bool quick);
+
+/// Where a failure map run is, for a progress line.
+struct FailureMapProgress {
+  const SweepSpec* sweep = nullptr;  ///< the sweep starting
+  std::string_view backend;          ///< on this backend
+  double fraction = 0.0;             ///< of all sweeps on all backends finished, in [0, 1)
+};
+
+/// Runs every sweep of `sweeps` on every backend, sweep by sweep, reporting each sweep on each
+/// backend before it starts. A stop request ends the run before the next sweep on a backend;
+/// the points measured so far are returned.
+std::vector<SweepPoint> runFailureMap(
+    std::span<const SweepSpec* const> sweeps, std::span<const BackendInfo> backends, bool quick,
+    const std::function<void(const FailureMapProgress&)>& progress = {}, std::stop_token stop = {});
 
 }  // namespace fooball::failure_map

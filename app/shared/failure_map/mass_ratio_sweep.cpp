@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "fooball/scene.h"
 #include "sweep_run.h"
@@ -18,8 +20,9 @@ constexpr double kRadius = 0.25;  // m
 constexpr double kSpeed = 1.0;    // m/s, of the shooter
 
 /// Ball 0 (mass `shooterMass`, kg) at kSpeed towards ball 1 (`targetMass`) at rest; the largest
-/// error of the two outgoing velocities over kSpeed.
-double headOnError(std::string_view backend, double shooterMass, double targetMass) {
+/// error of the two outgoing velocities over kSpeed, as the point at `ratio` of `variant`.
+SweepPoint headOn(std::string_view backend, std::string variant, double ratio, double shooterMass,
+                  double targetMass) {
   Scene scene;
   scene.name = "mass ratio";
   scene.box = {8.0, 2.0};
@@ -30,9 +33,10 @@ double headOnError(std::string_view backend, double shooterMass, double targetMa
   const double total = shooterMass + targetMass;
   const Vec2 shooterExact{(shooterMass - targetMass) / total * kSpeed, 0.0};
   const Vec2 targetExact{2.0 * shooterMass / total * kSpeed, 0.0};
-  return std::max(length(run.velocities[0] - shooterExact),
-                  length(run.velocities[1] - targetExact)) /
-         kSpeed;
+  const double error =
+      std::max(length(run.velocities[0] - shooterExact), length(run.velocities[1] - targetExact)) /
+      kSpeed;
+  return measuredPoint(scene, std::move(variant), ratio, error);
 }
 
 }  // namespace
@@ -40,8 +44,8 @@ double headOnError(std::string_view backend, double shooterMass, double targetMa
 std::vector<SweepPoint> massRatioSweep(std::string_view backend, bool quick) {
   std::vector<SweepPoint> points;
   for (const double ratio : logGrid(1.0, 1e6, quick ? 7 : 13)) {
-    points.push_back(measuredPoint("heavy hits light", ratio, headOnError(backend, ratio, 1.0)));
-    points.push_back(measuredPoint("light hits heavy", ratio, headOnError(backend, 1.0, ratio)));
+    points.push_back(headOn(backend, "heavy hits light", ratio, ratio, 1.0));
+    points.push_back(headOn(backend, "light hits heavy", ratio, 1.0, ratio));
   }
   return points;
 }

@@ -59,7 +59,7 @@ std::vector<SweepPoint> packingSweep(std::string_view backend, bool quick) {
         kinetic += 0.5 * ball.mass * lengthSquared(ball.velocity);
       const RunRecord run = runScene(scene, backend, seconds);
       points.push_back(measuredPoint(
-          std::to_string(side * side) + " balls r=" + (radius < 0.15 ? "0.1" : "0.2") + " m",
+          scene, std::to_string(side * side) + " balls r=" + (radius < 0.15 ? "0.1" : "0.2") + " m",
           boxFraction, run.energyDrift / kinetic, run.maxOverlap));
     }
   }

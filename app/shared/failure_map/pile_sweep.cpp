@@ -44,7 +44,7 @@ std::vector<SweepPoint> pileSweep(std::string_view backend, bool quick) {
     for (const BallDef& ball : scene.balls)
       energyScale += ball.mass * gravity * ball.radius;
     const RunRecord run = runScene(scene, backend, quick ? 1.0 : 2.0);
-    points.push_back(measuredPoint(std::to_string(scene.balls.size()) + " balls", gravity,
+    points.push_back(measuredPoint(scene, std::to_string(scene.balls.size()) + " balls", gravity,
                                    run.energyDrift / energyScale, run.maxOverlap));
   }
   return points;

@@ -46,7 +46,8 @@ std::vector<SweepPoint> scaleSweep(std::string_view backend, bool quick) {
     for (const BallDef& ball : scene.balls)
       kinetic += 0.5 * ball.mass * lengthSquared(ball.velocity);
     const RunRecord run = runScene(scene, backend, quick ? 1.0 : 2.0);
-    points.push_back(measuredPoint("40 balls", scale, run.energyDrift / kinetic, run.maxOverlap));
+    points.push_back(
+        measuredPoint(scene, "40 balls", scale, run.energyDrift / kinetic, run.maxOverlap));
   }
   return points;
 }

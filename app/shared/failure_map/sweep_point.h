@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "fooball/scene.h"
+
 namespace fooball::failure_map {
 
 /// One scene of a sweep run on one backend: where it sits on the sweep's parameter axis, the
@@ -14,6 +16,7 @@ struct SweepPoint {
   double error = 0.0;       ///< the sweep's error metric (SweepSpec::errorName); NaN fails
   double maxOverlap = 0.0;  ///< deepest overlap seen, fraction of the smaller radius
   bool passed = false;
+  Scene scene;  ///< the scene as run (the app opens it when its point is clicked)
 };
 
 }  // namespace fooball::failure_map

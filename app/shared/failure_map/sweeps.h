@@ -13,9 +13,10 @@
 namespace fooball::failure_map {
 
 /// A point as a sweep measures it; runSweep adds the sweep, the backend and the verdict.
-inline SweepPoint measuredPoint(std::string variant, double parameter, double error,
-                                double maxOverlap = 0.0) {
+inline SweepPoint measuredPoint(const Scene& scene, std::string variant, double parameter,
+                                double error, double maxOverlap = 0.0) {
   SweepPoint point;
+  point.scene = scene;
   point.variant = std::move(variant);
   point.parameter = parameter;
   point.error = error;

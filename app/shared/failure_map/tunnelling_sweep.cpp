@@ -45,6 +45,7 @@ SweepPoint ballTarget(std::string_view backend, double radius, double speed) {
                  {{targetX, 2.0 * radius}, {}, radius, mass}};
   const RunRecord run = runScene(scene, backend, time);
   SweepPoint point;
+  point.scene = scene;
   point.error = (length(run.velocities[0]) + length(run.velocities[1] - Vec2{speed, 0.0})) / speed;
   return point;
 }
@@ -61,6 +62,7 @@ SweepPoint wallTarget(std::string_view backend, double radius, double speed) {
       {{width - (1.0 + kStartGap) * radius, 2.0 * radius}, {speed, 0.0}, radius, diskMass(radius)}};
   const RunRecord run = runScene(scene, backend, time);
   SweepPoint point;
+  point.scene = scene;
   point.error = length(run.velocities[0] - Vec2{-speed, 0.0}) / speed;
   if (run.escaped > 0) point.error = 2.0;  // gone through the wall, whatever its velocity
   return point;

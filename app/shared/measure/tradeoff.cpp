@@ -110,7 +110,9 @@ double momentumError(const Scene& scene, const TradeoffSetting& setting,
   return momentumScale > 0.0 ? drift / momentumScale : drift;
 }
 
-void checkSettings(const TradeoffSettings& settings) {
+}  // namespace
+
+void checkTradeoffSettings(const TradeoffSettings& settings) {
   if (!(std::isfinite(settings.duration) && settings.duration > 0.0)) {
     throw std::invalid_argument("duration: must be a number > 0");
   }
@@ -125,8 +127,6 @@ void checkSettings(const TradeoffSettings& settings) {
   }
   if (settings.timingRepeats < 1) throw std::invalid_argument("timing repeats: must be >= 1");
 }
-
-}  // namespace
 
 std::vector<TradeoffSetting> tradeoffGrid(std::span<const BackendInfo> backends) {
   std::vector<TradeoffSetting> grid;
@@ -163,10 +163,11 @@ std::string settingsText(const TradeoffSetting& setting) {
 std::vector<TradeoffPoint> measureTradeoff(
     const Scene& scene, std::span<const TradeoffSetting> grid, const TradeoffSettings& settings,
     const std::function<void(const TradeoffProgress&)>& progress, std::stop_token stop) {
-  checkSettings(settings);
+  checkTradeoffSettings(settings);
   for (const TradeoffSetting& setting : grid)
     configured(setting);  // unknown backends and options fail before anything runs
-  const std::vector<Vec2> reference = positionsToCompare(scene, createBackend("exact"), settings);
+  const std::vector<Vec2> reference =
+      positionsToCompare(scene, createBackend(kReferenceBackend), settings);
   std::vector<TradeoffPoint> points;
   for (const TradeoffSetting& setting : grid) {
     if (stop.stop_requested()) break;
@@ -190,8 +191,9 @@ double chaosGrowth(const Scene& scene, const TradeoffSettings& settings) {
   constexpr double kNudge = 1e-9;  // m
   Scene nudged = scene;
   nudged.balls[0].position.x += kNudge;
-  const std::vector<Vec2> a = positionsToCompare(scene, createBackend("exact"), settings);
-  const std::vector<Vec2> b = positionsToCompare(nudged, createBackend("exact"), settings);
+  const std::vector<Vec2> a = positionsToCompare(scene, createBackend(kReferenceBackend), settings);
+  const std::vector<Vec2> b =
+      positionsToCompare(nudged, createBackend(kReferenceBackend), settings);
   double largest = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i)
     largest = std::max(largest, length(a[i] - b[i]));

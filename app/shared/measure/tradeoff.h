@@ -13,6 +13,10 @@
 
 namespace fooball::measure {
 
+/// The backend whose run is the reference a trajectory error is measured from: it solves every
+/// collision at its exact time.
+inline constexpr std::string_view kReferenceBackend = "exact";
+
 /// One backend with some of its options set (the rest at their defaults).
 struct TradeoffSetting {
   std::string backend;
@@ -60,6 +64,10 @@ struct TradeoffProgress {
   const TradeoffSetting* setting = nullptr;  ///< the setting just measured
   double fraction = 0.0;                     ///< of all settings, in (0, 1]
 };
+
+/// Throws std::invalid_argument naming the first bad setting (a duration, compare time or dt
+/// that is not a number > 0, too many steps).
+void checkTradeoffSettings(const TradeoffSettings& settings);
 
 /// Measures every setting on `scene` (valid), against one run of the `exact` backend. Throws
 /// std::invalid_argument for bad settings. A stop request ends the run after the current

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "chart_image.h"
+#include "failure_map_chart_builder.h"
+#include "measured_points.h"
 #include "offscreen_qt.h"
 
 namespace fooball::plots {
@@ -123,11 +125,14 @@ QChart* panel(const SweepSpec& spec, std::span<const SweepPoint> points, const M
     }
     std::sort(curve.begin(), curve.end(),
               [](const SweepPoint* a, const SweepPoint* b) { return a->parameter < b->parameter; });
+    std::vector<std::size_t> measured;
     for (const SweepPoint* point : curve) {
       line->append(point->parameter, shown(point->*measure.field));
+      measured.push_back(static_cast<std::size_t>(point - points.data()));
       if (!(point->*measure.field <= measure.limit))
         failing->append(point->parameter, shown(point->*measure.field));
     }
+    tagMeasurements(*line, measured);
     add(line, true);
   }
   add(failing, true);
@@ -136,9 +141,8 @@ QChart* panel(const SweepSpec& spec, std::span<const SweepPoint> points, const M
 
 }  // namespace
 
-void saveFailureMapChart(const SweepSpec& spec, std::span<const SweepPoint> points,
-                         const std::filesystem::path& path) {
-  const OffscreenQt qt;
+std::vector<QChart*> makeFailureMapCharts(const SweepSpec& spec,
+                                          std::span<const SweepPoint> points) {
   std::vector<QChart*> charts = {
       panel(spec, points,
             {&SweepPoint::error, QString::fromStdString(std::string(spec.errorName)),
@@ -149,10 +153,19 @@ void saveFailureMapChart(const SweepSpec& spec, std::span<const SweepPoint> poin
               {&SweepPoint::maxOverlap, "deepest overlap (fraction of r; below 1e-4 at the bottom)",
                spec.overlapLimit, 1e-4}));
   }
-  const QString title = QString("Failure map, %1: %2 (errors of 0 drawn at the bottom)")
-                            .arg(QString::fromStdString(std::string(spec.name)),
-                                 QString::fromStdString(std::string(spec.title)));
-  saveCharts(charts, title, 900, 600, path);
+  return charts;
+}
+
+QString failureMapChartTitle(const SweepSpec& spec) {
+  return QString("Failure map, %1: %2 (errors of 0 drawn at the bottom)")
+      .arg(QString::fromStdString(std::string(spec.name)),
+           QString::fromStdString(std::string(spec.title)));
+}
+
+void saveFailureMapChart(const SweepSpec& spec, std::span<const SweepPoint> points,
+                         const std::filesystem::path& path) {
+  const OffscreenQt qt;
+  saveCharts(makeFailureMapCharts(spec, points), failureMapChartTitle(spec), 900, 600, path);
 }
 
 }  // namespace fooball::plots

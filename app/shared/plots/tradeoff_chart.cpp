@@ -10,8 +10,10 @@
 #include <limits>
 
 #include "chart_image.h"
+#include "measured_points.h"
 #include "offscreen_qt.h"
 #include "pareto.h"
+#include "tradeoff_chart_builder.h"
 
 namespace fooball::plots {
 
@@ -72,11 +74,15 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
     scatter->setColor(backendColor(backend));
     scatter->setMarkerSize(9.0);
     std::vector<measure::CostAndError> own;
-    for (const measure::TradeoffPoint& point : points) {
+    std::vector<std::size_t> measured;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const measure::TradeoffPoint& point = points[i];
       if (point.setting.backend != backend) continue;
       scatter->append(point.cpuMsPerSimulatedSecond, shown(point.*axis.error));
       own.push_back({point.cpuMsPerSimulatedSecond, point.*axis.error});
+      measured.push_back(i);
     }
+    tagMeasurements(*scatter, measured);
     add(scatter, true);
     auto* front = new QLineSeries;
     front->setPen(QPen(backendColor(backend), 2.0));
@@ -89,20 +95,28 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
 
 }  // namespace
 
+std::vector<QChart*> makeTradeoffCharts(std::span<const measure::TradeoffPoint> points,
+                                        const measure::TradeoffSettings& settings) {
+  const QString trajectory = QString("RMS distance from the %1 run at %2 s (m)")
+                                 .arg(QString::fromUtf8(measure::kReferenceBackend))
+                                 .arg(settings.compareAt);
+  const QString energy = QString("largest energy error in %1 s (relative)").arg(settings.duration);
+  return {panel(points, {&measure::TradeoffPoint::trajectoryError, trajectory}),
+          panel(points, {&measure::TradeoffPoint::energyError, energy})};
+}
+
+QString tradeoffChartTitle(const std::string& scene, const measure::TradeoffSettings& settings) {
+  return QString("Speed against accuracy on %1 (dt %2 s; lines: Pareto fronts)")
+      .arg(QString::fromStdString(scene))
+      .arg(settings.dt, 0, 'g', 4);
+}
+
 void saveTradeoffChart(std::span<const measure::TradeoffPoint> points, const std::string& scene,
                        const measure::TradeoffSettings& settings,
                        const std::filesystem::path& path) {
   const OffscreenQt qt;
-  const QString trajectory =
-      QString("RMS distance from the exact run at %1 s (m)").arg(settings.compareAt);
-  const QString energy = QString("largest energy error in %1 s (relative)").arg(settings.duration);
-  const std::vector<QChart*> charts = {
-      panel(points, {&measure::TradeoffPoint::trajectoryError, trajectory}),
-      panel(points, {&measure::TradeoffPoint::energyError, energy})};
-  const QString title = QString("Speed against accuracy on %1 (dt %2 s; lines: Pareto fronts)")
-                            .arg(QString::fromStdString(scene))
-                            .arg(settings.dt, 0, 'g', 4);
-  saveCharts(charts, title, 720, 600, path);
+  saveCharts(makeTradeoffCharts(points, settings), tradeoffChartTitle(scene, settings), 720, 600,
+             path);
 }
 
 }  // namespace fooball::plots

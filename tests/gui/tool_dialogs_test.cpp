@@ -1,0 +1,301 @@
+// Tools → Speed vs accuracy and Tools → Failure map: they run what `fooball-cli tradeoff` and
+// `failure-map` run on a worker (the window stays live), cancel without leaving a half result,
+// draw the CLI's charts from the measurements, and a click on a point opens its configuration.
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScatterSeries>
+#include <QXYSeries>
+#include <functional>
+
+#include "failure_map_dialog.h"
+#include "fooball/presets.h"
+#include "gui_fixture.h"
+#include "measured_charts.h"
+#include "tool_run_panel.h"
+#include "tradeoff_dialog.h"
+#include "window_actions.h"
+
+namespace fooball::gui::testing {
+namespace {
+
+/// Only the items named `names` checked.
+void checkOnly(QListWidget* list, const QStringList& names) {
+  for (int row = 0; row < list->count(); ++row) {
+    QListWidgetItem* item = list->item(row);
+    item->setCheckState(names.contains(item->text()) ? Qt::Checked : Qt::Unchecked);
+  }
+}
+
+/// The series of `view`'s chart named `name` (a legend entry), perhaps with a note in brackets
+/// ("elastic (error 0: at the bottom)").
+QXYSeries* seriesNamed(QChartView* view, const QString& name) {
+  for (QAbstractSeries* series : view->chart()->series()) {
+    if (series->name() == name || series->name().startsWith(name + QStringLiteral(" (")))
+      return qobject_cast<QXYSeries*>(series);
+  }
+  return nullptr;
+}
+
+class Tools : public GuiTest {
+ protected:
+  TradeoffDialog* openTradeoff() {
+    window->actions().tradeoff()->trigger();
+    return window->actions().tradeoffDialog();
+  }
+  FailureMapDialog* openFailureMap() {
+    window->actions().failureMap()->trigger();
+    return window->actions().failureMapDialog();
+  }
+  /// Starts `dialog` with its Start button and waits for the end of the run.
+  void runToEnd(ToolDialog* dialog) {
+    QTest::mouseClick(dialog->runPanel()->startButton(), Qt::LeftButton);
+    ASSERT_TRUE(dialog->runPanel()->running())
+        << dialog->runPanel()->errorLabel()->text().toStdString();
+    ASSERT_TRUE(waitUntil([&] { return !dialog->runPanel()->running(); }, 30.0 * slowdown()));
+    EXPECT_TRUE(dialog->runPanel()->errorLabel()->isHidden())
+        << dialog->runPanel()->errorLabel()->text().toStdString();
+  }
+  /// Clicks `series`' point `index` as the mouse would (QXYSeries::clicked), a pixel off.
+  void clickPoint(ToolDialog* dialog, QXYSeries* series, int index) {
+    const QPointF value = series->at(index);
+    QChart* chart = series->chart();
+    const QPointF offset =
+        chart->mapToValue(chart->mapToPosition(value, series) + QPointF(1, 1), series);
+    dialog->charts()->pointClicked(series, offset);
+  }
+  void expectIdle(ToolDialog* dialog) {
+    EXPECT_FALSE(dialog->runPanel()->running());
+    EXPECT_TRUE(dialog->runPanel()->startButton()->isEnabled());
+    EXPECT_FALSE(dialog->runPanel()->cancelButton()->isEnabled());
+    EXPECT_FALSE(runs().paused()) << "the simulation continues after the run";
+  }
+};
+
+TEST_F(Tools, AreInTheToolsMenu) {
+  open(stillBalls());
+  for (QAction* menu : window->menuBar()->actions()) {
+    if (menu->text() != QStringLiteral("&Tools")) continue;
+    EXPECT_TRUE(menu->menu()->actions().contains(window->actions().tradeoff()));
+    EXPECT_TRUE(menu->menu()->actions().contains(window->actions().failureMap()));
+  }
+  EXPECT_TRUE(openTradeoff()->isVisible());
+  EXPECT_TRUE(openFailureMap()->isVisible());
+}
+
+TEST_F(Tools, TradeoffRunsWithoutBlockingTheWindowAndChartsEachSetting) {
+  open(stillBalls());
+  TradeoffDialog* dialog = openTradeoff();
+  dialog->presetBox()->setCurrentText(QStringLiteral("gas"));
+  checkOnly(dialog->backendList(), {QStringLiteral("elastic")});
+  dialog->durationEdit()->setText(QStringLiteral("0.5"));
+
+  // A heartbeat of posted events on the GUI thread (as the benchmark's test): it beats during
+  // the run only if the measuring runs elsewhere.
+  int beatsDuringRun = 0;
+  bool beating = true;
+  std::function<void()> beat = [&] {
+    if (!beating) return;
+    if (dialog->runPanel()->running()) ++beatsDuringRun;
+    QMetaObject::invokeMethod(dialog, beat, Qt::QueuedConnection);
+  };
+  QMetaObject::invokeMethod(dialog, beat, Qt::QueuedConnection);
+  QTest::mouseClick(dialog->runPanel()->startButton(), Qt::LeftButton);
+  EXPECT_TRUE(dialog->runPanel()->running());
+  EXPECT_TRUE(runs().paused()) << "the simulation pauses while the tool measures";
+  EXPECT_TRUE(dialog->runPanel()->cancelButton()->isEnabled());
+  EXPECT_FALSE(dialog->durationEdit()->isEnabled());
+  ASSERT_TRUE(waitUntil([&] { return !dialog->runPanel()->running(); }, 30.0 * slowdown()));
+  beating = false;
+  QCoreApplication::processEvents();
+  EXPECT_GT(beatsDuringRun, 1) << "the event loop ran while the measurement did";
+  expectIdle(dialog);
+  EXPECT_EQ(dialog->runPanel()->progressBar()->value(),
+            dialog->runPanel()->progressBar()->maximum());
+
+  // elastic at 1 … 64 substeps.
+  const std::vector<measure::TradeoffPoint>& points = dialog->points();
+  ASSERT_EQ(points.size(), 7u);
+  const std::vector<QChartView*>& views = dialog->charts()->views();
+  ASSERT_EQ(views.size(), 2u) << "cost against trajectory error, then against energy error";
+  for (std::size_t panel = 0; panel < views.size(); ++panel) {
+    QXYSeries* elastic = seriesNamed(views[panel], QStringLiteral("elastic"));
+    ASSERT_NE(elastic, nullptr);
+    ASSERT_EQ(elastic->count(), 7);
+    for (int i = 0; i < elastic->count(); ++i) {
+      const measure::TradeoffPoint& point = points[std::size_t(i)];
+      const double error = panel == 0 ? point.trajectoryError : point.energyError;
+      EXPECT_EQ(elastic->at(i).x(), point.cpuMsPerSimulatedSecond);
+      if (error > 0.0) {
+        EXPECT_EQ(elastic->at(i).y(), error) << "panel " << panel;
+      }
+    }
+  }
+}
+
+TEST_F(Tools, TradeoffPointOpensItsSettingAgainstTheReference) {
+  open(stillBalls());
+  TradeoffDialog* dialog = openTradeoff();
+  dialog->presetBox()->setCurrentText(QStringLiteral("head-on"));
+  checkOnly(dialog->backendList(), {QStringLiteral("elastic")});
+  dialog->durationEdit()->setText(QStringLiteral("0.3"));
+  runToEnd(dialog);
+  QXYSeries* elastic = seriesNamed(dialog->charts()->views().at(1), QStringLiteral("elastic"));
+  ASSERT_NE(elastic, nullptr);
+  ASSERT_EQ(elastic->count(), 7);
+  clickPoint(dialog, elastic, 2);
+
+  ASSERT_EQ(runs().runCount(), 2);
+  EXPECT_EQ(runs().group().spec(0), (RunSpec{"elastic", {"substeps=4"}}));
+  EXPECT_EQ(runs().group().spec(1), (RunSpec{"exact", {}}));
+  const Scene headOn = loadPreset("head-on");
+  const Scene& loaded = runs().group().loadedScene();
+  EXPECT_EQ(loaded.name, headOn.name);
+  ASSERT_EQ(loaded.balls.size(), headOn.balls.size());
+  for (std::size_t i = 0; i < loaded.balls.size(); ++i) {
+    EXPECT_EQ(loaded.balls[i].position, headOn.balls[i].position);
+    EXPECT_EQ(loaded.balls[i].velocity, headOn.balls[i].velocity);
+  }
+}
+
+TEST_F(Tools, CancelledTradeoffShowsNoResult) {
+  open(stillBalls());
+  TradeoffDialog* dialog = openTradeoff();
+  dialog->presetBox()->setCurrentText(QStringLiteral("gas"));  // every backend: a minute or more
+  ASSERT_TRUE(dialog->start());
+  ASSERT_TRUE(
+      waitUntil([&] { return dialog->runPanel()->progressBar()->value() > 0; }, 30.0 * slowdown()))
+      << "a setting measured before the cancel";
+  QTest::mouseClick(dialog->runPanel()->cancelButton(), Qt::LeftButton);
+  // It stops after the setting under way: a few seconds at most on the gas.
+  ASSERT_TRUE(waitUntil([&] { return !dialog->runPanel()->running(); }, 20.0 * slowdown()));
+  expectIdle(dialog);
+  EXPECT_TRUE(dialog->points().empty());
+  EXPECT_TRUE(dialog->charts()->views().empty()) << "no chart of half a run";
+  EXPECT_EQ(dialog->runPanel()->progressBar()->value(), 0);
+  EXPECT_TRUE(dialog->durationEdit()->isEnabled());
+}
+
+TEST_F(Tools, TradeoffBadDurationIsOneErrorAndStartsNothing) {
+  open(stillBalls());
+  TradeoffDialog* dialog = openTradeoff();
+  dialog->durationEdit()->setText(QStringLiteral("soon"));
+  QTest::mouseClick(dialog->runPanel()->startButton(), Qt::LeftButton);
+  EXPECT_FALSE(dialog->runPanel()->running());
+  EXPECT_FALSE(runs().paused());
+  EXPECT_EQ(dialog->runPanel()->errorLabel()->text(),
+            QStringLiteral("duration: must be a number > 0"));
+}
+
+TEST_F(Tools, FailureMapRunsAndChartsEachSweep) {
+  open(stillBalls());
+  FailureMapDialog* dialog = openFailureMap();
+  EXPECT_TRUE(dialog->quickBox()->isChecked()) << "quick by default: seconds, not minutes";
+  checkOnly(dialog->sweepList(), {QStringLiteral("tunnelling"), QStringLiteral("packing")});
+  checkOnly(dialog->backendList(), {QStringLiteral("elastic")});
+  runToEnd(dialog);
+  expectIdle(dialog);
+
+  const std::vector<failure_map::SweepPoint> tunnelling =
+      failure_map::runSweep(failure_map::findSweep("tunnelling"), "elastic", true);
+  const std::vector<failure_map::SweepPoint> packing =
+      failure_map::runSweep(failure_map::findSweep("packing"), "elastic", true);
+  EXPECT_EQ(dialog->points().size(), tunnelling.size() + packing.size());
+  EXPECT_EQ(dialog->shownSweepBox()->count(), 2);
+  EXPECT_EQ(dialog->shownSweepBox()->currentText(), QStringLiteral("tunnelling"));
+  ASSERT_EQ(dialog->charts()->views().size(), 1u) << "tunnelling has no overlap limit";
+  QXYSeries* wall =
+      seriesNamed(dialog->charts()->views()[0], QStringLiteral("elastic, wall r=0.05 m"));
+  ASSERT_NE(wall, nullptr);
+  std::vector<double> wallParameters;
+  for (const failure_map::SweepPoint& point : tunnelling) {
+    if (point.variant == "wall r=0.05 m") wallParameters.push_back(point.parameter);
+  }
+  ASSERT_EQ(wall->count(), static_cast<int>(wallParameters.size()));
+  for (int i = 0; i < wall->count(); ++i)
+    EXPECT_EQ(wall->at(i).x(), wallParameters[std::size_t(i)]);
+
+  dialog->shownSweepBox()->setCurrentText(QStringLiteral("packing"));
+  EXPECT_EQ(dialog->shownPoints().size(), packing.size());
+  EXPECT_EQ(dialog->charts()->views().size(), 2u) << "the error, then the deepest overlap";
+}
+
+TEST_F(Tools, FailureMapPointOpensItsSceneAgainstTheReferenceUnlessItIsTheReference) {
+  open(stillBalls());
+  FailureMapDialog* dialog = openFailureMap();
+  checkOnly(dialog->sweepList(), {QStringLiteral("tunnelling")});
+  checkOnly(dialog->backendList(), {QStringLiteral("elastic"), QStringLiteral("exact")});
+  runToEnd(dialog);
+  QChartView* view = dialog->charts()->views().at(0);
+
+  QXYSeries* elastic = seriesNamed(view, QStringLiteral("elastic, ball r=0.05 m"));
+  ASSERT_NE(elastic, nullptr);
+  const int index = 5;
+  clickPoint(dialog, elastic, index);
+  const failure_map::SweepPoint* clicked = nullptr;
+  for (const failure_map::SweepPoint& point : dialog->shownPoints()) {
+    if (point.backend == "elastic" && point.variant == "ball r=0.05 m" &&
+        point.parameter == elastic->at(index).x())
+      clicked = &point;
+  }
+  ASSERT_NE(clicked, nullptr);
+  ASSERT_EQ(runs().runCount(), 2);
+  EXPECT_EQ(runs().group().spec(0), (RunSpec{"elastic", {}}));
+  EXPECT_EQ(runs().group().spec(1), (RunSpec{"exact", {}}));
+  const Scene& loaded = runs().group().loadedScene();
+  EXPECT_EQ(loaded.box, clicked->scene.box);
+  ASSERT_EQ(loaded.balls.size(), clicked->scene.balls.size());
+  for (std::size_t i = 0; i < loaded.balls.size(); ++i) {
+    EXPECT_EQ(loaded.balls[i].position, clicked->scene.balls[i].position);
+    EXPECT_EQ(loaded.balls[i].velocity, clicked->scene.balls[i].velocity);
+  }
+
+  QXYSeries* exact = seriesNamed(view, QStringLiteral("exact, wall r=0.05 m"));
+  ASSERT_NE(exact, nullptr);
+  clickPoint(dialog, exact, 0);
+  ASSERT_EQ(runs().runCount(), 1) << "the reference is not compared with itself";
+  EXPECT_EQ(runs().group().spec(0), (RunSpec{"exact", {}}));
+}
+
+TEST_F(Tools, CancelledFailureMapShowsNoResult) {
+  open(stillBalls());
+  FailureMapDialog* dialog = openFailureMap();
+  dialog->quickBox()->setChecked(false);  // every sweep on every backend in full
+  ASSERT_TRUE(dialog->start());
+  ASSERT_TRUE(
+      waitUntil([&] { return dialog->runPanel()->progressBar()->value() > 0; }, 30.0 * slowdown()))
+      << "a sweep finished before the cancel";
+  QTest::mouseClick(dialog->runPanel()->cancelButton(), Qt::LeftButton);
+  ASSERT_TRUE(waitUntil([&] { return !dialog->runPanel()->running(); }, 20.0 * slowdown()));
+  expectIdle(dialog);
+  EXPECT_TRUE(dialog->points().empty());
+  EXPECT_TRUE(dialog->charts()->views().empty());
+  EXPECT_EQ(dialog->shownSweepBox()->count(), 0);
+}
+
+TEST_F(Tools, ClosingTheWindowMidRunIsSafe) {
+  open(stillBalls());
+  TradeoffDialog* tradeoff = openTradeoff();
+  FailureMapDialog* failureMap = openFailureMap();
+  failureMap->quickBox()->setChecked(false);
+  ASSERT_TRUE(tradeoff->start());
+  ASSERT_TRUE(failureMap->start());
+  EXPECT_TRUE(runs().paused());
+  QTest::qWait(50);
+  window->close();
+  EXPECT_FALSE(tradeoff->isVisible());
+  EXPECT_FALSE(failureMap->isVisible());
+  window.reset();  // joins the workers
+  QCoreApplication::processEvents();
+}
+
+}  // namespace
+}  // namespace fooball::gui::testing
