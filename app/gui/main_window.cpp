@@ -26,6 +26,7 @@
 #include "sidebar_wiring.h"
 #include "simulation_view.h"
 #include "status_panel.h"
+#include "timeline_bar.h"
 #include "window_actions.h"
 #include "window_settings.h"
 
@@ -70,6 +71,8 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   layout->setSpacing(0);
   layout->addWidget(compareReadout_);
   layout->addWidget(view_, 1);
+  timeline_ = new TimelineBar(*runs_);
+  layout->addWidget(timeline_);
   setCentralWidget(central);
 
   createDocks();
@@ -134,6 +137,7 @@ void MainWindow::createDocks() {
 void MainWindow::connectRuns() {
   connect(runs_.get(), &RunController::pausedChanged, this, [this](bool paused) {
     actions_->showPaused(paused);
+    timeline_->showHistory();
     frames_->restartClock();
     view_->update();
   });
@@ -161,6 +165,15 @@ void MainWindow::connectRuns() {
     compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
     updateTitle();
     updateStatusBar();
+  });
+  connect(runs_.get(), &RunController::rewound, this, [this](double time) {
+    charts_->dropAfter(time);  // the charts end where the runs are now
+    sampleCharts();
+    showReadouts();
+    showSelectedBall();
+    timeline_->showHistory();
+    updateStatusBar();
+    view_->update();
   });
   connect(runs_.get(), &RunController::runsRestarted, this, [this](double time) {
     charts_->addMarker(time, tr("runs restarted identical"));

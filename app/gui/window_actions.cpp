@@ -39,6 +39,12 @@ void WindowActions::createActions() {
   step_->setToolTip(tr("One physics step of every run while paused (.)"));
   step_->setEnabled(false);
 
+  stepBack_ = new QAction(tr("Step &back"), this);
+  stepBack_->setShortcut(Qt::Key_Comma);
+  stepBack_->setToolTip(tr("Rewind every run one kept moment (0.1 s) while paused (,)"));
+  stepBack_->setEnabled(false);
+  connect(stepBack_, &QAction::triggered, &window_.runs(), &RunController::stepBack);
+
   createUndoActions();
 
   deleteBall_ = new QAction(tr("&Delete selected ball"), this);
@@ -148,6 +154,7 @@ void WindowActions::createMenus() {
   QMenu* simulation = bar->addMenu(tr("&Simulation"));
   simulation->addAction(pause_);
   simulation->addAction(step_);
+  simulation->addAction(stepBack_);
   // A field being edited keeps Delete for its text: Qt gives editors their editing keys first.
   simulation->addAction(deleteBall_);
   simulation->addSeparator();
@@ -203,6 +210,7 @@ void WindowActions::showPaused(bool paused) {
   pause_->setChecked(paused);
   pause_->setText(paused ? tr("&Continue") : tr("&Pause"));
   step_->setEnabled(paused);
+  stepBack_->setEnabled(paused);
 }
 
 void WindowActions::openSceneDialog() {
