@@ -71,8 +71,6 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   layout->setSpacing(0);
   layout->addWidget(compareReadout_);
   layout->addWidget(view_, 1);
-  timeline_ = new TimelineBar(*runs_);
-  layout->addWidget(timeline_);
   setCentralWidget(central);
 
   createDocks();
@@ -82,6 +80,9 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   actions_ = new WindowActions(*this);
   new NumberFieldKeys(*this, *view_);  // Space and '.' reach the actions from a number field
   status_ = new StatusPanel(*statusBar(), *runs_, frames_->frameRate());
+  // In the status bar's stretch, not under the box: the box keeps every pixel of height.
+  timeline_ = new TimelineBar(*runs_);
+  statusBar()->addWidget(timeline_, 1);
   wireSidebar(*this);
   wireView(*this);
   connectRuns();
@@ -171,7 +172,6 @@ void MainWindow::connectRuns() {
     sampleCharts();
     showReadouts();
     showSelectedBall();
-    timeline_->showHistory();
     updateStatusBar();
     view_->update();
   });
@@ -318,6 +318,7 @@ void MainWindow::startLiveUpdates() {
 
 void MainWindow::updateStatusBar() {
   status_->update();
+  timeline_->showHistory();
 }
 
 void MainWindow::updateTitle() {

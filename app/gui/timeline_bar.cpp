@@ -23,7 +23,7 @@ TimelineBar::TimelineBar(RunController& runs, QWidget* parent)
   slider_->setToolTip(
       tr("Rewind: drag back to any kept moment while paused (',' steps back one); continuing "
          "from there drops the future"));
-  slider_->setMinimumWidth(160);
+  slider_->setMinimumWidth(80);
   text_->setObjectName(QStringLiteral("historyBound"));
   text_->setToolTip(
       tr("How much simulated time the rewind history spans, and the memory it holds of its "
