@@ -67,6 +67,7 @@ void showMouseAndKeys(QWidget* parent) {
           "<tr><td><b>Right button</b></td><td>place a permanent attractor</td></tr>"
           "<tr><td><b>Space</b></td><td>pause / continue</td></tr>"
           "<tr><td><b>.</b></td><td>single step while paused</td></tr>"
+          "<tr><td><b>,</b></td><td>step back (rewind 0.1 s) while paused</td></tr>"
           "<tr><td><b>Esc</b></td><td>give the keyboard back to the box (after editing a "
           "field)</td></tr>"
           "<tr><td><b>Click while paused</b></td><td>select a ball and edit it in the "

@@ -29,6 +29,7 @@
 #include "simulation_view.h"
 #include "statistics_panel.h"
 #include "status_panel.h"
+#include "timeline_bar.h"
 #include "window_actions.h"
 #include "window_settings.h"
 
@@ -82,6 +83,9 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   actions_ = new WindowActions(*this);
   new NumberFieldKeys(*this, *view_);  // Space and '.' reach the actions from a number field
   status_ = new StatusPanel(*statusBar(), *runs_, frames_->frameRate());
+  // In the status bar's stretch, not under the box: the box keeps every pixel of height.
+  timeline_ = new TimelineBar(*runs_);
+  statusBar()->addWidget(timeline_, 1);
   wireSidebar(*this);
   wireView(*this);
   connectRuns();
@@ -165,6 +169,7 @@ void MainWindow::createDocks() {
 void MainWindow::connectRuns() {
   connect(runs_.get(), &RunController::pausedChanged, this, [this](bool paused) {
     actions_->showPaused(paused);
+    timeline_->showHistory();
     frames_->restartClock();
     view_->update();
   });
@@ -192,6 +197,14 @@ void MainWindow::connectRuns() {
     compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
     updateTitle();
     updateStatusBar();
+  });
+  connect(runs_.get(), &RunController::rewound, this, [this](double time) {
+    charts_->dropAfter(time);  // the charts end where the runs are now
+    sampleCharts();
+    showReadouts();
+    showSelectedBall();
+    updateStatusBar();
+    view_->update();
   });
   connect(runs_.get(), &RunController::runsRestarted, this, [this](double time) {
     charts_->addMarker(time, tr("runs restarted identical"));
@@ -343,6 +356,7 @@ void MainWindow::startLiveUpdates() {
 
 void MainWindow::updateStatusBar() {
   status_->update();
+  timeline_->showHistory();
 }
 
 void MainWindow::updateTitle() {

@@ -24,6 +24,7 @@ class SettingsSidebar;
 class SimulationView;
 class StatisticsPanel;
 class StatusPanel;
+class TimelineBar;
 class WindowActions;
 
 /// What the window starts on; main() fills it from the command line and remembered settings.
@@ -66,6 +67,7 @@ class MainWindow : public QMainWindow {
   WindowActions& actions() const { return *actions_; }
   FrameLoop& frames() const { return *frames_; }
   StatusPanel& status() const { return *status_; }
+  TimelineBar& timeline() const { return *timeline_; }
   QDockWidget* sidebarDock() const { return sidebarDock_; }
   /// Edits and deletes of balls (ball_commands.h). Its commands name balls by index and hold
   /// their states, so whatever renumbers or replaces the balls clears it: loading a scene or
@@ -158,6 +160,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* statisticsDock_ = nullptr;
   WindowActions* actions_ = nullptr;
   StatusPanel* status_ = nullptr;
+  TimelineBar* timeline_ = nullptr;
   FrameLoop* frames_ = nullptr;
   QUndoStack* undoStack_ = nullptr;
 

@@ -18,6 +18,7 @@ std::unique_ptr<Backend> makeBackend(const RunSpec& spec) {
 RunController::RunController(const Scene& scene, const std::vector<RunSpec>& specs, QObject* parent)
     : QObject(parent), group_(scene, specs, &makeBackend) {
   group_.shareCores(static_cast<int>(std::thread::hardware_concurrency()));
+  group_.setHistoryBound(RunHistory::kDefaultBound);
   matchWorkersToRuns();
 }
 
@@ -153,6 +154,18 @@ void RunController::setPaused(bool paused) {
 int RunController::advance(double elapsedSeconds, double timeScale) {
   if (stepping()) return collectSteps(std::chrono::milliseconds(0)) ? 1 : 0;
   return stepRuns(group_.takeDueSteps(elapsedSeconds, timeScale));
+}
+
+void RunController::rewindTo(std::size_t index) {
+  settle();
+  group_.rewindTo(index);
+  emit rewound(group_.time());
+}
+
+void RunController::stepBack() {
+  settle();
+  group_.stepBack();
+  emit rewound(group_.time());
 }
 
 void RunController::stepOnce() {

@@ -92,6 +92,11 @@ class RunController : public QObject {
   int advance(double elapsedSeconds, double timeScale);
   /// One step of every run, paused or not.
   void stepOnce();
+  /// Every run and the baseline back at moment `index` of the group's history (RunGroup::
+  /// rewindTo); emits rewound. The app keeps RunHistory::kDefaultBound bytes of history.
+  void rewindTo(std::size_t index);
+  /// One moment back (RunGroup::stepBack); emits rewound.
+  void stepBack();
   StepTiming stepTiming(int index) const { return timing_.at(std::size_t(index)); }
 
   /// How long advance() and stepOnce() wait for a step before leaving it to run in the
@@ -117,6 +122,8 @@ class RunController : public QObject {
   /// The set of balls changed: a scene was loaded, balls were added, removed or edited.
   void ballsChanged();
   void pausedChanged(bool paused);
+  /// The runs were rewound to simulated time `time` (s).
+  void rewound(double time);
   void selectionChanged(std::optional<std::size_t> index);
 
  private:

@@ -41,6 +41,12 @@ void WindowActions::createActions() {
   step_->setToolTip(tr("One physics step of every run while paused (.)"));
   step_->setEnabled(false);
 
+  stepBack_ = new QAction(tr("Step &back"), this);
+  stepBack_->setShortcut(Qt::Key_Comma);
+  stepBack_->setToolTip(tr("Rewind every run one kept moment (0.1 s) while paused (,)"));
+  stepBack_->setEnabled(false);
+  connect(stepBack_, &QAction::triggered, &window_.runs(), &RunController::stepBack);
+
   createUndoActions();
 
   deleteBall_ = new QAction(tr("&Delete selected ball"), this);
@@ -151,6 +157,7 @@ void WindowActions::createMenus() {
   QMenu* simulation = bar->addMenu(tr("&Simulation"));
   simulation->addAction(pause_);
   simulation->addAction(step_);
+  simulation->addAction(stepBack_);
   // A field being edited keeps Delete for its text: Qt gives editors their editing keys first.
   simulation->addAction(deleteBall_);
   simulation->addSeparator();
@@ -221,6 +228,7 @@ void WindowActions::showPaused(bool paused) {
   pause_->setChecked(paused);
   pause_->setText(paused ? tr("&Continue") : tr("&Pause"));
   step_->setEnabled(paused);
+  stepBack_->setEnabled(paused);
 }
 
 void WindowActions::openSceneDialog() {

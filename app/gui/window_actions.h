@@ -24,6 +24,7 @@ class WindowActions : public QObject {
 
   QAction* pause() const { return pause_; }
   QAction* step() const { return step_; }
+  QAction* stepBack() const { return stepBack_; }
   QAction* deleteBall() const { return deleteBall_; }
   QAction* undo() const { return undo_; }
   QAction* redo() const { return redo_; }
@@ -85,6 +86,7 @@ class WindowActions : public QObject {
   QAction* undo_ = nullptr;
   QAction* redo_ = nullptr;
   QAction* step_ = nullptr;
+  QAction* stepBack_ = nullptr;
   QAction* temperature_ = nullptr;
   QAction* tethers_ = nullptr;
   QAction* velocityVectors_ = nullptr;

@@ -20,6 +20,7 @@ RunGroup::RunGroup(const Scene& scene, const std::vector<RunSpec>& specs, Backen
   }
   for (const RunSpec& spec : specs)
     runs_.push_back({spec, makeSimulation(scene, spec)});
+  history_.setBound(0);
 }
 
 RunGroup::~RunGroup() = default;
@@ -80,6 +81,7 @@ void RunGroup::removeRun(std::size_t index) {
   runs_.erase(runs_.begin() + static_cast<std::ptrdiff_t>(index));
   if (index == 0 && baseline_) setBaseline(true);  // the baseline follows the new reference
   shareCores(cores_);
+  restartHistory();
 }
 
 void RunGroup::setSpec(std::size_t index, const RunSpec& spec) {
@@ -87,6 +89,7 @@ void RunGroup::setSpec(std::size_t index, const RunSpec& spec) {
   run.simulation->setBackend(makeBackend(spec));
   run.spec = spec;
   if (index == 0 && baseline_) setBaseline(true);  // a copy of run 0 has run 0's method
+  restartHistory();
 }
 
 void RunGroup::setOption(std::size_t index, std::string_view name, double value) {
@@ -94,6 +97,7 @@ void RunGroup::setOption(std::size_t index, std::string_view name, double value)
   run.simulation->backend().setOption(name, value);
   run.spec.set(name, value);
   if (index == 0 && baseline_) baseline_->backend().setOption(name, value);
+  restartHistory(true);
 }
 
 void RunGroup::synchronise() {
@@ -102,6 +106,7 @@ void RunGroup::synchronise() {
   for (Run& run : runs_)
     run.simulation->load(now, clock);
   if (baseline_) setBaseline(true);
+  restartHistory();
 }
 
 void RunGroup::shareCores(int cores) {
@@ -139,6 +144,7 @@ void RunGroup::setBaseline(bool on) {
     baseline_->load(displaced, time());  // on run 0's clock
   }
   shareCores(cores_);
+  restartHistory();
 }
 
 std::optional<Divergence> RunGroup::baselineDivergence() const {
@@ -155,6 +161,7 @@ void RunGroup::load(const Scene& scene) {
   });
   massChosen_.clear();
   if (baseline_) setBaseline(true);
+  restartHistory();
 }
 
 void RunGroup::restart() {
@@ -170,10 +177,12 @@ void RunGroup::restart() {
   // ones placed as the spinner places them (the same at every restart: placed at step 0).
   setBallCount(count);
   if (baseline_) setBaseline(true);
+  restartHistory();
 }
 
 void RunGroup::setWorld(const WorldSettings& world) {
   forEachSimulation([&](Simulation& simulation) { simulation.setWorld(world); });
+  restartHistory();
 }
 
 BallDef RunGroup::ball(std::size_t index) const {
@@ -208,6 +217,7 @@ void RunGroup::setBallCount(std::size_t count) {
   });
   massChosen_.resize(std::min(count, massChosen_.size()));
   if (selected() && *selected() >= count) setSelected(std::nullopt);
+  restartHistory();
 }
 
 void RunGroup::setBall(std::size_t index, const BallDef& ball) {
@@ -227,6 +237,7 @@ void RunGroup::setBall(std::size_t index, const BallDef& ball) {
       simulation->setBall(index, before);
     throw;
   }
+  restartHistory();
 }
 
 BallDef RunGroup::editBall(std::size_t index, BallDef edited) {
@@ -253,6 +264,7 @@ void RunGroup::deleteBall(std::size_t index) {
   });
   if (index < massChosen_.size()) massChosen_.erase(massChosen_.begin() + std::ptrdiff_t(index));
   setSelected(std::nullopt);
+  restartHistory();
 }
 
 BallStates RunGroup::ballStates(std::size_t index) const {
@@ -316,6 +328,7 @@ void RunGroup::restoreBall(std::size_t index, const BallStates& saved, BallPlace
   } else {
     massChosen_[index] = saved.massChosen;
   }
+  restartHistory();
 }
 
 void RunGroup::setMouseMode(MouseMode mode) {
@@ -358,10 +371,12 @@ void RunGroup::clearAttractors() {
 
 void RunGroup::setDt(double dt) {
   forEachSimulation([&](Simulation& simulation) { simulation.setDt(dt); });
+  restartHistory();
 }
 
 void RunGroup::step() {
   forEachSimulation([&](Simulation& simulation) { simulation.step(); });
+  recordHistory();
 }
 
 void RunGroup::runFor(double seconds) {
@@ -383,6 +398,7 @@ void RunGroup::finishSteps(std::vector<BackendStep>& steps) {
       [&](Simulation& simulation) { simulation.finishStep(std::move(steps[next++])); });
   steps.clear();
   stepping_ = false;
+  recordHistory();
 }
 
 void RunGroup::abandonSteps() {
@@ -391,6 +407,7 @@ void RunGroup::abandonSteps() {
     run.simulation->abandonStep(makeBackend(run.spec));
   if (baseline_) baseline_->abandonStep(makeBackend(runs_.front().spec));
   stepping_ = false;
+  restartHistory();
 }
 
 void RunGroup::setPaused(bool paused) {
@@ -414,6 +431,47 @@ int RunGroup::takeDueSteps(double elapsedSeconds, double timeScale) {
   const int count = static_cast<int>(due);
   accumulator_ -= count * dt();
   return count;
+}
+
+std::span<Simulation* const> RunGroup::simulations() {
+  simulations_.clear();
+  forEachSimulation([&](Simulation& simulation) { simulations_.push_back(&simulation); });
+  return simulations_;
+}
+
+void RunGroup::setHistoryBound(std::size_t bytes) {
+  history_.setBound(bytes);
+  restartHistory();
+}
+
+void RunGroup::restartHistory(bool reload) {
+  if (!keepsHistory()) return;
+  // Re-stepping starts at the first moment: every backend must have just been loaded from its
+  // state there, as a backend switch does (RunHistory says why a saved state is not enough).
+  const auto refresh = [&](Simulation& simulation, const RunSpec& spec) {
+    if (reload || !simulation.backendFresh()) simulation.setBackend(makeBackend(spec));
+  };
+  for (Run& run : runs_)
+    refresh(*run.simulation, run.spec);
+  if (baseline_) refresh(*baseline_, runs_.front().spec);
+  history_.start(simulations());
+}
+
+void RunGroup::recordHistory() {
+  if (keepsHistory() && !history_.record(simulations())) restartHistory();
+}
+
+void RunGroup::rewindTo(std::size_t index) {
+  if (!keepsHistory() || stepping_ || index >= history_.size()) return;
+  history_.keepNow(simulations());
+  history_.restore(index, simulations());
+  accumulator_ = 0.0;
+}
+
+void RunGroup::stepBack() {
+  if (!keepsHistory()) return;
+  history_.keepNow(simulations());
+  if (history_.position() > 0) rewindTo(history_.position() - 1);
 }
 
 }  // namespace fooball

@@ -1,5 +1,6 @@
 #include "fooball/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,7 @@ void Simulation::load(const Scene& scene, double startTime) {
   interactions.forgetBalls();
   refreshState();
   initialEnergy_ = totalEnergy();
+  backendFresh_ = true;
 }
 
 void Simulation::adoptScene(const Scene& scene) {
@@ -70,6 +72,7 @@ void Simulation::setBackend(std::unique_ptr<Backend> next) {
   earlierBackends_ = earlierBackends_ + backendCounters_;
   backend_ = std::move(next);
   refreshState();
+  backendFresh_ = true;
 }
 
 Scene Simulation::scene() const {
@@ -96,6 +99,7 @@ void Simulation::setWorld(const WorldSettings& world) {
   backend_->setWorld(world);
   world_ = world;
   externalWork_ += totalEnergy() - before;
+  backendFresh_ = false;
 }
 
 void Simulation::checkPlacement(const BallDef& ball, std::optional<std::size_t> replacing,
@@ -123,6 +127,7 @@ void Simulation::setBall(std::size_t index, const BallDef& ball) {
   colors_[index] = ball.color;
   refreshState();
   externalWork_ += totalEnergy() - before;
+  backendFresh_ = false;
 }
 
 void Simulation::insertBall(std::size_t index, const BallDef& ball) {
@@ -147,6 +152,7 @@ void Simulation::replaceBalls(std::vector<BallDef> balls) {
   interactions.forgetBalls();
   refreshState();
   externalWork_ += totalEnergy() - before;
+  backendFresh_ = true;
 }
 
 void Simulation::setDt(double dt) {
@@ -169,11 +175,25 @@ void Simulation::step() {
 }
 
 BackendStep Simulation::beginStep() {
+  const bool withForces = interactions.active();
+  if (withForces) interactions.forces(balls(), dt_, forces_);
+  return handOut(withForces);
+}
+
+void Simulation::replayStep(std::span<const Vec2> forces) {
+  const bool withForces = !forces.empty();
+  if (withForces) std::copy(forces.begin(), forces.end(), forces_.begin());
+  BackendStep step = handOut(withForces);
+  step.run();
+  finishStep(std::move(step));
+}
+
+BackendStep Simulation::handOut(bool withForces) {
   BackendStep step;
   step.dt_ = dt_;
-  step.withForces_ = interactions.active();
-  if (step.withForces_) {
-    interactions.forces(balls(), dt_, forces_);
+  step.withForces_ = withForces;
+  lastStepForced_ = withForces;
+  if (withForces) {
     // The contract applies J = F·dt as a kick at the start of the step, so the work is exact:
     // ΔKE = J·v + |J|²/2m.
     for (std::size_t i = 0; i < ballCount(); ++i) {
@@ -193,6 +213,7 @@ void Simulation::finishStep(BackendStep&& done) {
   refreshState();
   ++stepsSinceDtChange_;
   ++steps_;
+  backendFresh_ = false;
 }
 
 void Simulation::abandonStep(std::unique_ptr<Backend> fresh) {
@@ -201,7 +222,42 @@ void Simulation::abandonStep(std::unique_ptr<Backend> fresh) {
   earlierBackends_ = earlierBackends_ + backendCounters_;
   backend_ = std::move(fresh);
   forces_.assign(ballCount(), Vec2{});
+  lastStepForced_ = false;
   refreshState();
+  backendFresh_ = true;
+}
+
+std::span<const Vec2> Simulation::lastForces() const {
+  return lastStepForced_ ? std::span<const Vec2>(forces_) : std::span<const Vec2>();
+}
+
+std::size_t Simulation::State::bytes() const {
+  return sizeof(State) + scene.name.capacity() + scene.balls.capacity() * sizeof(BallDef);
+}
+
+Simulation::State Simulation::state() const {
+  return {scene(),          dt_,
+          timeBase_,        stepsSinceDtChange_,
+          steps_,           earlierBackends_,
+          backendCounters_, initialEnergy_,
+          externalWork_};
+}
+
+void Simulation::restore(const State& state) {
+  backend_->load(state.scene);
+  adoptScene(state.scene);
+  dt_ = state.dt;
+  timeBase_ = state.timeBase;
+  stepsSinceDtChange_ = state.stepsSinceDtChange;
+  steps_ = state.steps;
+  // The backend counts from zero again; a fresh state's backend counters are zero, so the sums
+  // go on in the same order.
+  earlierBackends_ = state.earlierBackends + state.backendCounters;
+  initialEnergy_ = state.initialEnergy;
+  externalWork_ = state.externalWork;
+  lastStepForced_ = false;
+  refreshState();
+  backendFresh_ = true;
 }
 
 void Simulation::run(double seconds) {

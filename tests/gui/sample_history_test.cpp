@@ -162,6 +162,28 @@ TEST(SampleHistory, TimeGoingBackStartsOver) {
   EXPECT_EQ(everything(history).size(), 1u);
 }
 
+// A rewind (fooball/run_history.h): the samples after its time go, the earlier stay, and the run
+// continues from there without starting over. 100 samples at 0.1 s, a recent tail of 32 (times
+// 6.8–9.9 s) and before it a decimated run.
+TEST(SampleHistory, DropAfterKeepsThePastAndContinues) {
+  SampleHistory history(16, 32);
+  for (std::uint64_t i = 0; i < 100; ++i)
+    history.add(numberedSample(i, 0.1));
+  history.dropAfter(9.0);  // inside the tail: cut exactly
+  EXPECT_DOUBLE_EQ(history.latest().time, 9.0);
+  // Inside the decimated run: what is kept there is each stretch's first sample.
+  const double stretch = static_cast<double>(history.wholeRunStride()) * 0.1;  // s
+  history.dropAfter(5.0);
+  EXPECT_LE(history.latest().time, 5.0);
+  EXPECT_GT(history.latest().time, 5.0 - stretch);
+  EXPECT_EQ(history.first().time, 0.0);
+  for (const ChartSample& sample : everything(history))
+    EXPECT_LE(sample.time, 5.0);
+  history.add(numberedSample(51, 0.1));
+  EXPECT_DOUBLE_EQ(history.latest().time, 5.1);
+  EXPECT_EQ(history.first().time, 0.0);  // continued, not started over
+}
+
 TEST(SampleHistory, EqualTimesAreKept) {
   SampleHistory history;
   history.add(numberedSample(0, 0.1));

@@ -78,6 +78,14 @@ void ChartData::forEachHistory(Action&& action) const {
   if (baselineShown_) action(baseline_.history);
 }
 
+void ChartData::dropAfter(double time) {
+  for (Run& run : runs_)
+    run.history.dropAfter(time);
+  baseline_.history.dropAfter(time);
+  while (!markers_.empty() && markers_.back().time > time)
+    markers_.pop_back();
+}
+
 bool ChartData::hasSamples() const {
   bool found = false;
   forEachHistory([&found](const SampleHistory& history) { found = found || !history.empty(); });

@@ -58,6 +58,8 @@ class ChartData {
   /// Moves the newest marker to `time` with `label` (one gesture going on); adds one if there is
   /// none.
   void replaceNewestMarker(double time, const QString& label);
+  /// Forgets every sample and marker after `time` (s): the runs were rewound to it.
+  void dropAfter(double time);
 
   int runCount() const { return static_cast<int>(runs_.size()); }
   QStringList runNames() const;

@@ -311,6 +311,11 @@ void ChartPanel::addMarker(double time, const QString& label) {
   viewOutOfDate_ = true;
 }
 
+void ChartPanel::dropAfter(double time) {
+  data_.dropAfter(time);
+  viewOutOfDate_ = true;
+}
+
 void ChartPanel::replaceNewestMarker(double time, const QString& label) {
   data_.replaceNewestMarker(time, label);
   viewOutOfDate_ = true;

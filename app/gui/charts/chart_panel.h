@@ -90,6 +90,9 @@ class ChartPanel : public QWidget {
   /// "grab").
   void addMarker(double time, const QString& label);
   void replaceNewestMarker(double time, const QString& label);
+  /// The runs were rewound to `time` (s): every sample and marker after it goes, so the charts
+  /// end where the runs are and never show a future that no longer exists.
+  void dropAfter(double time);
   /// Scrolling window (seconds of simulated time, whole seconds from 1 s to 1 h) vs the whole
   /// run.
   void setWindowSeconds(double seconds);  // default 20 s

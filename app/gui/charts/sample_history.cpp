@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace fooball::gui {
 namespace {
@@ -51,6 +52,16 @@ void SampleHistory::clear() {
   recentNext_ = 0;
   recentSize_ = 0;
   addedCount_ = 0;
+}
+
+void SampleHistory::dropAfter(double time) {
+  if (empty() || latest().time <= time) return;
+  std::vector<ChartSample> kept;
+  copySince(-std::numeric_limits<double>::infinity(), kept);
+  std::erase_if(kept, [time](const ChartSample& sample) { return sample.time > time; });
+  clear();
+  for (const ChartSample& sample : kept)
+    add(sample);
 }
 
 void SampleHistory::add(const ChartSample& sample) {

@@ -28,6 +28,11 @@ class SampleHistory {
                          std::size_t recentCapacity = kDefaultRecentCapacity);
 
   void clear();
+  /// Forgets every sample after `time` (s): the runs were rewound to it, and that future no
+  /// longer exists. The recent tail is cut exactly; the whole run is rebuilt from what
+  /// copySince() gives before it, so decimated stretches keep their first samples and lose their
+  /// extremes (a spike inside one goes: a rewind is rare, a future that never was must not show).
+  void dropAfter(double time);
 
   /// Samples come in non-decreasing time. An earlier time means the run started over without a
   /// clear(), so the history starts over too rather than drawing a line back in time. A sample

@@ -10,6 +10,7 @@
 
 #include "fooball/ball_problem.h"
 #include "fooball/divergence.h"
+#include "fooball/run_history.h"
 #include "fooball/run_spec.h"
 #include "fooball/simulation.h"
 
@@ -197,6 +198,24 @@ class RunGroup {
   double pendingTime() const { return accumulator_; }
   static constexpr double kMaxStepsPerFramePerTimeScale = 4.0;
 
+  // --- Rewind ---------------------------------------------------------------------------------
+  /// Keeps moments to rewind to within `bytes` (RunHistory), starting from now; 0 keeps none,
+  /// the default, so a driver that never rewinds (fooball-cli) pays nothing. Every change but a
+  /// step or a tool's force (edits, settings, runs, the baseline, loading), and a history grown
+  /// past its bound, starts the history afresh from now: every backend that has stepped since
+  /// it was loaded is reloaded from its state then, as switching backend does, so the first
+  /// moment is one every run can be re-stepped from bit for bit.
+  void setHistoryBound(std::size_t bytes);
+  /// nullptr while no history is kept.
+  const RunHistory* history() const { return keepsHistory() ? &history_ : nullptr; }
+  /// Puts every run and the baseline back at moment `index` of history(), all together: the
+  /// state, clock, counters and energy budget they had then, bit for bit. The moments after it
+  /// stay until the next step, which drops them. Not while steps are out.
+  void rewindTo(std::size_t index);
+  /// Rewinds to the moment before the one the runs are at; nothing at the first. Rewinding
+  /// re-steps from the history's first moment: its cost grows with the history's length.
+  void stepBack();
+
  private:
   struct Run {
     RunSpec spec;
@@ -215,6 +234,13 @@ class RunGroup {
   void copyToolsTo(Simulation& simulation) const;
   void applyCores(Backend& backend) const;
   std::size_t stepperCount() const { return runs_.size() + (baseline_ ? 1 : 0); }
+  bool keepsHistory() const { return history_.bound() > 0; }
+  /// Every run and the baseline, in stepping order, in simulations_.
+  std::span<Simulation* const> simulations();
+  /// See setHistoryBound(); `reload` reloads even a backend that was just loaded (an option
+  /// changed since).
+  void restartHistory(bool reload = false);
+  void recordHistory();
 
   BackendFactory factory_;
   Scene loadedScene_;
@@ -230,6 +256,8 @@ class RunGroup {
   /// setBallCount, load), which only the group does; not in BallDef or scene files, because it
   /// records what the user did in this session, not physics.
   std::vector<bool> massChosen_;
+  RunHistory history_;
+  std::vector<Simulation*> simulations_;  ///< simulations()'s, kept to step without allocating
 };
 
 }  // namespace fooball

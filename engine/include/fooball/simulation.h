@@ -102,6 +102,36 @@ class Simulation {
   /// `seconds` is not a positive finite number).
   void run(double seconds);
 
+  /// Everything of this simulation a rewind puts back (fooball/run_history.h) apart from the
+  /// backend's internals: the balls, box and world, the clock, the counters and the energy
+  /// budget. The tools are not part of it: they are what the user holds now.
+  struct State {
+    Scene scene;
+    double dt = 0.0;        ///< s
+    double timeBase = 0.0;  ///< s
+    std::uint64_t stepsSinceDtChange = 0;
+    std::uint64_t steps = 0;
+    BackendCounters earlierBackends;
+    BackendCounters backendCounters;
+    double initialEnergy = 0.0;  ///< J
+    double externalWork = 0.0;   ///< J
+    /// Bytes it holds, vectors by capacity.
+    std::size_t bytes() const;
+  };
+  State state() const;
+  /// Back to `state` on the backend this simulation has, which is loaded from it. The run
+  /// continues bit for bit as it did from there when `state` was taken while backendFresh().
+  void restore(const State& state);
+  /// Whether the backend has not stepped or been edited since it was loaded from this
+  /// simulation's state (load, setBackend, replaceBalls, abandonStep, restore): the state now
+  /// is all its future depends on, whatever the backend.
+  bool backendFresh() const { return backendFresh_; }
+  /// The forces (N, one per ball) the last step applied, or empty when it applied none.
+  std::span<const Vec2> lastForces() const;
+  /// One step with `forces` (N, or empty for none) in place of the tools': a step replayed as it
+  /// was taken, its work booked as the tools' would be.
+  void replayStep(std::span<const Vec2> forces);
+
   double time() const { return timeBase_ + static_cast<double>(stepsSinceDtChange_) * dt_; }
   std::uint64_t steps() const { return steps_; }
   std::size_t ballCount() const { return masses_.size(); }
@@ -129,6 +159,8 @@ class Simulation {
                       std::string_view where) const;
   void refreshState();
   double totalEnergy() const;
+  /// Hands the backend out for a step, with forces_ when `withForces`.
+  BackendStep handOut(bool withForces);
 
   std::unique_ptr<Backend> backend_;
   Box box_;
@@ -150,6 +182,8 @@ class Simulation {
   BackendCounters backendCounters_;  ///< the backend's own, as of the last refreshState()
   double initialEnergy_ = 0.0;
   double externalWork_ = 0.0;  ///< J, by tools, edits and gravity changes
+  bool backendFresh_ = true;
+  bool lastStepForced_ = false;
 };
 
 }  // namespace fooball

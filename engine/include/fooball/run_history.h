@@ -1,0 +1,84 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "fooball/simulation.h"
+
+namespace fooball {
+
+/// The moments a run group can rewind to (RunGroup::rewindTo), within a bound on the bytes kept.
+///
+/// The guarantee (README, "Rewind"): rewinding to a moment and stepping forward gives the same
+/// positions, velocities, counters, clock and energy budget, bit for bit, as the run had there,
+/// on every backend. A saved state does not give that: a backend's future depends on more than
+/// its balls (Box2D's warm-start cache, xpbd's contact memory, the exact solver's event queue,
+/// even elastic's storage order, which it re-sorts every 16 substeps and which orders its sums:
+/// measured, a dense heap loaded from its state drifts off in the last bits), and copying those
+/// internals out of five methods, two of them third-party engines, is neither cheap nor safe.
+/// So the history keeps each simulation's whole state once, at its first moment, where every
+/// backend had just been loaded from that state (RunGroup::restartHistory makes sure), and the
+/// forces the tools applied in each step since; a moment is a step count, reached by loading
+/// the first state and re-stepping — deterministic, by the backend contract — or, forward of
+/// where the runs are, by stepping on. Edits are not logged: they start a new history.
+///
+/// A moment is marked every kStepsPerMoment steps. Continuing from a rewound moment drops the
+/// moments and forces after it: that future no longer exists. When the kept bytes pass the
+/// bound the history starts afresh from now (the oldest goes), which the run group does.
+class RunHistory {
+ public:
+  /// Bytes the history may hold by default: 256 MB.
+  static constexpr std::size_t kDefaultBound = std::size_t{256} << 20;
+  /// Steps between moments: 10 per second at 60 steps per second.
+  static constexpr std::uint64_t kStepsPerMoment = 6;
+
+  /// Forgets every moment and keeps `simulations` now as the first, each backendFresh().
+  void start(std::span<Simulation* const> simulations);
+  /// After each lockstep step: drops the future of a rewound moment, logs the tools' forces,
+  /// and marks a moment when one is due. False when the history has outgrown its bound (the
+  /// caller starts it afresh).
+  bool record(std::span<Simulation* const> simulations);
+  /// Before a rewind from now: marks a moment now unless the last is now, so the user can come
+  /// back to it.
+  void keepNow(std::span<Simulation* const> simulations);
+  /// Puts every simulation at moment `index` (< size()): forward of where they are by stepping
+  /// on, else from the first moment.
+  void restore(std::size_t index, std::span<Simulation* const> simulations);
+
+  std::size_t size() const { return moments_.size(); }
+  /// s, the time of moment `index`.
+  double time(std::size_t index) const { return moments_.at(index).time; }
+  /// The moment the simulations are at or last passed (the last one unless rewound).
+  std::size_t position() const { return position_; }
+  /// Bytes held, vectors by capacity.
+  std::size_t bytes() const { return bytes_; }
+  std::size_t bound() const { return bound_; }
+  void setBound(std::size_t bytes) { bound_ = bytes; }
+
+ private:
+  struct Moment {
+    std::uint64_t steps = 0;  ///< the simulations' step count
+    double time = 0.0;        ///< s
+  };
+  /// The tools' forces in one step of one simulation.
+  struct ForcedStep {
+    std::uint64_t step = 0;  ///< the simulation's step count before it
+    std::vector<Vec2> forces;
+  };
+
+  void mark(const Simulation& simulation);
+  /// Steps `simulation` (simulation `k` in stepping order) on from where it is to `steps`.
+  void stepOn(std::size_t k, Simulation& simulation, std::uint64_t steps) const;
+  void recount();
+
+  std::vector<Moment> moments_;
+  std::vector<Simulation::State> first_;              ///< one per simulation
+  std::vector<std::vector<ForcedStep>> forcedSteps_;  ///< one log per simulation
+  std::size_t position_ = 0;
+  std::size_t bytes_ = 0;
+  std::size_t bound_ = kDefaultBound;
+};
+
+}  // namespace fooball
