@@ -43,7 +43,8 @@ constexpr Preset kPresets[] = {
     {"mass-ratio", "a 100:1 pair against a wall: 31 collisions, the first digits of pi",
      "The heavy ball (100 times the mass) drives the light one against the wall, where it "
      "rattles until the heavy ball turns back. Count the hits: 16 ball–ball and 15 wall "
-     "bounces, 31 in all, the first digits of π (a ratio of 10,000 gives 314).",
+     "bounces, 31 in all, the first digits of π (a ratio of 10,000 gives 314); the last comes "
+     "at about 30 s, when the light ball catches the heavy one up.",
      preset_data::k_mass_ratio, true},
     {"tunnelling", "a fast small ball at a gap narrower than itself: bounce or tunnel through?",
      "The ball is wider than the gap, so it should bounce back. At the default 4 substeps it "
