@@ -105,6 +105,46 @@ TEST_P(Rewind, RewindingThenSteppingRepeatsTheRunBitForBit) {
   }
 }
 
+// Every backend, anchored every 60 steps (the least; RunHistory::kMinStepsPerAnchor): a rewind
+// re-steps from the latest anchor before its moment, whose reload the runs had too, and a run
+// continued after a rewind reaches the next anchor as before.
+TEST_P(Rewind, AcrossAnchorsRewindingThenSteppingRepeatsTheRunBitForBit) {
+  RunGroup group(fallingGas(), {spec()}, makeBackend);
+  group.setBaseline(true);
+  group.setHistoryBound(RunHistory::kDefaultBound, 1);
+  std::vector<Snapshot> runStates;
+  std::vector<Snapshot> baselineStates;
+  const auto step = [&](std::size_t steps) {
+    if (steps == 20) group.addAttractor({8.0, 6.0});
+    if (steps == 150) group.clearAttractors();
+    group.step();
+    if (runStates.size() < group.steps()) {
+      runStates.emplace_back(group.run(0));
+      baselineStates.emplace_back(*group.baseline());
+    }
+  };
+  for (std::size_t steps = 0; steps < 200; ++steps)
+    step(steps);
+  const RunHistory& history = *group.history();
+  ASSERT_EQ(history.anchorCount(), 4u);  // at steps 0, 60, 120 and 180
+
+  for (const std::size_t moment : {25u, 11u, 33u}) {  // steps 150, 66, 198: each past an anchor
+    group.rewindTo(moment);
+    const std::size_t steps = group.steps();
+    ASSERT_EQ(steps, 6 * moment);
+    EXPECT_TRUE(Snapshot(group.run(0)) == runStates[steps - 1]) << "moment " << moment;
+    EXPECT_TRUE(Snapshot(*group.baseline()) == baselineStates[steps - 1]) << "moment " << moment;
+  }
+  group.rewindTo(16);  // step 96, with the attractor on: continue through the anchors again
+  group.addAttractor({8.0, 6.0});
+  for (std::size_t steps = 96; steps < 200; ++steps) {
+    step(steps);
+    EXPECT_TRUE(Snapshot(group.run(0)) == runStates[steps]) << "step " << steps + 1;
+    EXPECT_TRUE(Snapshot(*group.baseline()) == baselineStates[steps]) << "step " << steps + 1;
+  }
+  EXPECT_EQ(history.anchorCount(), 4u);
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryBackend, Rewind, ::testing::ValuesIn(registeredBackends()),
                          backendName);
 
@@ -196,6 +236,39 @@ TEST(RewindHistory, AnEditStartsANewHistory) {
   group.setWorld(world);
   EXPECT_EQ(group.history()->size(), 1u);
   EXPECT_EQ(group.history()->time(0), group.time());
+}
+
+// The steps between anchors: a bounded re-step at any scene size, from the budget of ball-steps
+// down to the least of 60 steps.
+TEST(RewindHistory, AnchorsComeEveryBudgetOfBallStepsAndNoCloserThanTheLeast) {
+  RunHistory history;
+  EXPECT_EQ(history.stepsPerAnchor(38), 52'632u);  // 2e6 / 38 ball-steps, rounded up
+  EXPECT_EQ(history.stepsPerAnchor(10'000), 200u);
+  EXPECT_EQ(history.stepsPerAnchor(1'000'000), RunHistory::kMinStepsPerAnchor);
+  EXPECT_EQ(history.stepsPerAnchor(0), RunHistory::kDefaultBallStepsPerAnchor);
+}
+
+// Anchored every 60 steps and bounded to about two anchors: the oldest anchor goes with the
+// moments before the next, the rest of the history stays, and rewinding within it is exact.
+TEST(RewindHistory, OverItsBoundTheOldestAnchorGoesAndTheLaterMomentsStay) {
+  const std::size_t oneAnchor = elasticGroup(RunHistory::kDefaultBound)->history()->bytes();
+  auto owner =
+      std::make_unique<RunGroup>(fallingGas(), std::vector{parseRunSpec("elastic")}, makeBackend);
+  RunGroup& group = *owner;
+  group.setHistoryBound(oneAnchor * 5 / 2, 1);
+  for (int step = 0; step < 300; ++step) {
+    group.step();
+    ASSERT_LE(group.history()->bytes(), oneAnchor * 5 / 2) << "step " << step + 1;
+  }
+  const RunHistory& history = *group.history();
+  EXPECT_EQ(history.anchorCount(), 2u);  // at steps 240 and 300
+  EXPECT_EQ(history.time(0), 240 * group.dt());
+  EXPECT_EQ(history.size(), 11u);  // steps 240 to 300, every 6
+  const Snapshot now(group.run(0));
+  group.rewindTo(0);
+  while (group.steps() < now.steps)
+    group.step();
+  EXPECT_TRUE(Snapshot(group.run(0)) == now);
 }
 
 TEST(RewindHistory, NoneIsKeptUnlessAsked) {

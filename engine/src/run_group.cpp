@@ -439,26 +439,36 @@ std::span<Simulation* const> RunGroup::simulations() {
   return simulations_;
 }
 
-void RunGroup::setHistoryBound(std::size_t bytes) {
+void RunGroup::setHistoryBound(std::size_t bytes, std::uint64_t ballStepsPerAnchor) {
   history_.setBound(bytes);
+  history_.setBallStepsPerAnchor(ballStepsPerAnchor);
   restartHistory();
 }
 
-void RunGroup::restartHistory(bool reload) {
-  if (!keepsHistory()) return;
-  // Re-stepping starts at the first moment: every backend must have just been loaded from its
-  // state there, as a backend switch does (RunHistory says why a saved state is not enough).
+void RunGroup::reloadBackends(bool all) {
   const auto refresh = [&](Simulation& simulation, const RunSpec& spec) {
-    if (reload || !simulation.backendFresh()) simulation.setBackend(makeBackend(spec));
+    if (all || !simulation.backendFresh()) simulation.setBackend(makeBackend(spec));
   };
   for (Run& run : runs_)
     refresh(*run.simulation, run.spec);
   if (baseline_) refresh(*baseline_, runs_.front().spec);
+}
+
+void RunGroup::restartHistory(bool reload) {
+  if (!keepsHistory()) return;
+  // Re-stepping starts at an anchor: every backend must have just been loaded from its state
+  // there, as a backend switch does (RunHistory says why a saved state is not enough).
+  reloadBackends(reload);
   history_.start(simulations());
 }
 
 void RunGroup::recordHistory() {
-  if (keepsHistory() && !history_.record(simulations())) restartHistory();
+  if (!keepsHistory()) return;
+  if (!history_.record(simulations())) return restartHistory();
+  if (history_.anchorDue(simulations())) {
+    reloadBackends(false);
+    history_.anchor(simulations());
+  }
 }
 
 void RunGroup::rewindTo(std::size_t index) {

@@ -202,10 +202,12 @@ class RunGroup {
   /// Keeps moments to rewind to within `bytes` (RunHistory), starting from now; 0 keeps none,
   /// the default, so a driver that never rewinds (fooball-cli) pays nothing. Every change but a
   /// step or a tool's force (edits, settings, runs, the baseline, loading), and a history grown
-  /// past its bound, starts the history afresh from now: every backend that has stepped since
-  /// it was loaded is reloaded from its state then, as switching backend does, so the first
-  /// moment is one every run can be re-stepped from bit for bit.
-  void setHistoryBound(std::size_t bytes);
+  /// past its bound with one anchor left, starts the history afresh from now: every backend
+  /// that has stepped since it was loaded is reloaded from its state then, as switching backend
+  /// does, so the first moment is one every run can be re-stepped from bit for bit. The same
+  /// reload makes a new anchor every RunHistory::stepsPerAnchor() steps.
+  void setHistoryBound(std::size_t bytes,
+                       std::uint64_t ballStepsPerAnchor = RunHistory::kDefaultBallStepsPerAnchor);
   /// nullptr while no history is kept.
   const RunHistory* history() const { return keepsHistory() ? &history_ : nullptr; }
   /// Puts every run and the baseline back at moment `index` of history(), all together: the
@@ -213,7 +215,7 @@ class RunGroup {
   /// stay until the next step, which drops them. Not while steps are out.
   void rewindTo(std::size_t index);
   /// Rewinds to the moment before the one the runs are at; nothing at the first. Rewinding
-  /// re-steps from the history's first moment: its cost grows with the history's length.
+  /// re-steps from the latest anchor before the moment: at most RunHistory::stepsPerAnchor().
   void stepBack();
 
  private:
@@ -237,6 +239,9 @@ class RunGroup {
   bool keepsHistory() const { return history_.bound() > 0; }
   /// Every run and the baseline, in stepping order, in simulations_.
   std::span<Simulation* const> simulations();
+  /// Reloads every backend that has stepped since it was loaded (`all`: every one, as after an
+  /// option change) from its simulation's state, making a moment to re-step from.
+  void reloadBackends(bool all);
   /// See setHistoryBound(); `reload` reloads even a backend that was just loaded (an option
   /// changed since).
   void restartHistory(bool reload = false);
