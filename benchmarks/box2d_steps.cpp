@@ -7,13 +7,15 @@
 //
 // prints, in its "Collected :" line, the instructions of 60 steps after one untimed step, as
 // Box2dGasStep/5000/20/4 times them; `raw` instead of `backend` does the same for
-// RawBox2dGasStep.
+// RawBox2dGasStep, and `bare` for the backend's own bodies stepped without the adapter
+// (bare_box2d_world.h), whose difference from `backend` is the adapter's overhead.
 
 #include <charconv>
 #include <cstdio>
 #include <string_view>
 #include <system_error>
 
+#include "bare_box2d_world.h"
 #include "box2d/box2d_backend.h"
 #include "fooball/standard_scenes.h"
 #include "raw_box2d_world.h"
@@ -21,6 +23,7 @@
 namespace {
 
 using fooball::Backend;
+using fooball::benchmarks::BareBox2dWorld;
 using fooball::benchmarks::RawBox2dWorld;
 
 constexpr double kDt = 1.0 / 60.0;  // s, as box2d_benchmark
@@ -31,9 +34,18 @@ constexpr double kDt = 1.0 / 60.0;  // s, as box2d_benchmark
     backend.step(kDt, {});
 }
 
-[[gnu::noinline]] void timedSteps(RawBox2dWorld& world, int substeps, int steps) {
+/// A world stepped `substeps` Box2D steps per step: RawBox2dWorld or BareBox2dWorld.
+template <class World>
+[[gnu::noinline]] void timedSteps(World& world, int substeps, int steps) {
   for (int step = 0; step < steps; ++step)
     world.step(kDt, substeps);
+}
+
+template <class World>
+void stepWorld(const fooball::Scene& scene, int substeps, int steps) {
+  World world(scene);
+  world.step(kDt, substeps);
+  timedSteps(world, substeps, steps);
 }
 
 bool parse(std::string_view text, int& value) {
@@ -49,9 +61,9 @@ int main(int argc, char** argv) {
   int substeps = 0;
   int steps = 0;
   const std::string_view world = argc == 6 ? argv[1] : "";
-  if ((world != "backend" && world != "raw") || !parse(argv[2], balls) ||
+  if ((world != "backend" && world != "raw" && world != "bare") || !parse(argv[2], balls) ||
       !parse(argv[3], phiPercent) || !parse(argv[4], substeps) || !parse(argv[5], steps)) {
-    std::fputs("usage: box2d_steps backend|raw BALLS PHI_PERCENT SUBSTEPS STEPS\n", stderr);
+    std::fputs("usage: box2d_steps backend|raw|bare BALLS PHI_PERCENT SUBSTEPS STEPS\n", stderr);
     return 2;
   }
   const fooball::Scene scene =
@@ -62,10 +74,10 @@ int main(int argc, char** argv) {
     backend->load(scene);
     backend->step(kDt, {});
     timedSteps(*backend, steps);
+  } else if (world == "raw") {
+    stepWorld<RawBox2dWorld>(scene, substeps, steps);
   } else {
-    RawBox2dWorld raw(scene);
-    raw.step(kDt, substeps);
-    timedSteps(raw, substeps, steps);
+    stepWorld<BareBox2dWorld>(scene, substeps, steps);
   }
   return 0;
 }
