@@ -56,6 +56,14 @@ void MeasuredCharts::showCharts(std::vector<QChart*> charts, const QString& titl
   placeholder_->setVisible(views_.empty());
 }
 
+void MeasuredCharts::setPlaceholder(const QString& placeholder) {
+  placeholder_->setText(placeholder);
+}
+
+QString MeasuredCharts::placeholder() const {
+  return placeholder_->text();
+}
+
 void MeasuredCharts::pointClicked(QXYSeries* series, QPointF value) {
   if (const std::optional<std::size_t> index = plots::measurementAt(*series, value))
     emit measurementClicked(*index);

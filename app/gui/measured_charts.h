@@ -25,6 +25,9 @@ class MeasuredCharts : public QWidget {
 
   /// Shows `charts` (taken over) under `title`; none: the placeholder again.
   void showCharts(std::vector<QChart*> charts, const QString& title);
+  /// What shows while there are no charts (while a run goes, that it is measuring).
+  void setPlaceholder(const QString& placeholder);
+  QString placeholder() const;
   /// The charts shown, left to right.
   const std::vector<QChartView*>& views() const { return views_; }
 

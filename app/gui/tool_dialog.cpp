@@ -13,16 +13,19 @@ namespace fooball::gui {
 
 ToolDialog::ToolDialog(const QString& placeholder, QWidget* parent) : QDialog(parent) {
   run_ = new ToolRunPanel;
+  charts_ = new MeasuredCharts(placeholder);
   connect(run_, &ToolRunPanel::startRequested, this, [this] { start(); });
   connect(run_, &ToolRunPanel::runStarted, this, [this] {
     setSettingsEnabled(false);
+    // Until the run ends its charts are not there: say so rather than "Press Start".
+    charts_->setPlaceholder(tr("Measuring: the charts appear here when the run has ended"));
     emit runStarted();
   });
-  connect(run_, &ToolRunPanel::runFinished, this, [this] {
+  connect(run_, &ToolRunPanel::runFinished, this, [this, placeholder] {
     setSettingsEnabled(true);
+    charts_->setPlaceholder(placeholder);
     emit runFinished();
   });
-  charts_ = new MeasuredCharts(placeholder);
 }
 
 void ToolDialog::layOut(const QString& intro, QWidget* settings, QLayout* bottom) {

@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QLogValueAxis>
 #include <QMenuBar>
 #include <QProgressBar>
 #include <QPushButton>
@@ -16,7 +17,9 @@
 #include <QXYSeries>
 #include <functional>
 #include <limits>
+#include <memory>
 
+#include "chart_image.h"
 #include "failure_map_dialog.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
@@ -132,8 +135,12 @@ TEST_F(Tools, TradeoffRunsWithoutBlockingTheWindowAndChartsEachSetting) {
     QMetaObject::invokeMethod(dialog, beat, Qt::QueuedConnection);
   };
   QMetaObject::invokeMethod(dialog, beat, Qt::QueuedConnection);
+  const QString beforeStart = dialog->charts()->placeholder();
+  EXPECT_TRUE(beforeStart.startsWith(QStringLiteral("Press Start")));
   QTest::mouseClick(dialog->runPanel()->startButton(), Qt::LeftButton);
   EXPECT_TRUE(dialog->runPanel()->running());
+  EXPECT_TRUE(dialog->charts()->placeholder().startsWith(QStringLiteral("Measuring")))
+      << "not 'Press Start' while it runs";
   EXPECT_TRUE(runs().paused()) << "the simulation pauses while the tool measures";
   EXPECT_TRUE(dialog->runPanel()->cancelButton()->isEnabled());
   EXPECT_FALSE(dialog->durationEdit()->isEnabled());
@@ -207,6 +214,8 @@ TEST_F(Tools, CancelledTradeoffShowsNoResult) {
   expectIdle(dialog);
   EXPECT_TRUE(dialog->points().empty());
   EXPECT_TRUE(dialog->charts()->views().empty()) << "no chart of half a run";
+  EXPECT_TRUE(dialog->charts()->placeholder().startsWith(QStringLiteral("Press Start")))
+      << "ready for another run";
   EXPECT_EQ(dialog->runPanel()->progressBar()->value(), 0);
   EXPECT_TRUE(dialog->durationEdit()->isEnabled());
 }
@@ -322,6 +331,33 @@ TEST_F(Tools, ClosingTheWindowMidRunIsSafe) {
   EXPECT_FALSE(failureMap->isVisible());
   window.reset();  // joins the workers
   QCoreApplication::processEvents();
+}
+
+// The tools' log axes (shared with fooball-cli's PNGs): Qt labels every power of the axis'
+// base and elides them all to "…" when they crowd, as an energy panel did with an exact zero
+// error 16 decades below Box2D's. Over many decades every k-th decade is labelled, at most six
+// intervals, both ends on a label.
+TEST(DecadeAxis, LabelsEveryFewDecadesOverManyWithBothEndsLabelled) {
+  const auto axis = [](double low, double high) {
+    return std::unique_ptr<QLogValueAxis>(plots::decadeAxis(QString(), low, high, "%.0e"));
+  };
+  const auto wide = axis(3e-17, 0.02);  // decades -17 to -1: 16, so every third from -18 to 0
+  EXPECT_EQ(wide->base(), 1000.0);
+  EXPECT_EQ(wide->min(), 1e-18);
+  EXPECT_EQ(wide->max(), 1.0);
+  EXPECT_EQ(wide->minorTickCount(), 0);
+  const auto six = axis(1e-4, 50.0);  // -4 to 2: six decades, each labelled
+  EXPECT_EQ(six->base(), 10.0);
+  EXPECT_EQ(six->min(), 1e-4);
+  EXPECT_EQ(six->max(), 100.0);
+  const auto narrow = axis(2.0, 5.0);  // within one decade: 1 to 10, with the 2…9 lines
+  EXPECT_EQ(narrow->base(), 10.0);
+  EXPECT_EQ(narrow->min(), 1.0);
+  EXPECT_EQ(narrow->max(), 10.0);
+  EXPECT_EQ(narrow->minorTickCount(), 8);
+  const auto none = axis(0.0, 0.0);  // nothing a log axis can show: one decade from 1
+  EXPECT_EQ(none->min(), 1.0);
+  EXPECT_EQ(none->max(), 10.0);
 }
 
 }  // namespace

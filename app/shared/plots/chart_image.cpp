@@ -17,6 +17,13 @@
 
 namespace fooball::plots {
 
+namespace {
+
+/// Labelled intervals on a log axis at the most: about 40 px each on a panel 320 px high.
+constexpr int kMostLabelIntervals = 6;
+
+}  // namespace
+
 QColor backendColor(std::string_view backend) {
   static const QColor kPalette[] = {QColor(0xe0, 0xa0, 0x30), QColor(0x3a, 0x7c, 0xc8),
                                     QColor(0x3c, 0xa0, 0x55), QColor(0xb0, 0x4a, 0xb0),
@@ -52,12 +59,22 @@ QLogValueAxis* decadeAxis(const QString& title, double low, double high, const c
   auto* axis = new QLogValueAxis;
   axis->setTitleText(title);
   axis->setLabelFormat(labelFormat);
-  axis->setBase(10.0);
-  const double bottom = decadeBelow(low);
-  const double top = std::max(decadeAbove(high), 10.0 * bottom);
-  axis->setRange(bottom, top);
+  // No data, or none a log axis can show: one decade from 1.
+  if (!(low > 0.0) || !std::isfinite(low)) low = 1.0;
+  if (!(high >= low) || !std::isfinite(high)) high = low;
+  // The decade exponents of doubles are within ±324: ints hold them.
+  int bottom = static_cast<int>(std::floor(std::log10(low)));
+  int top = std::max(static_cast<int>(std::ceil(std::log10(high))), bottom + 1);
+  // Qt labels every power of the base, and elides them all to "…" when they crowd (a panel of
+  // 17 decades, an exact method's zero error beside percent-level ones): over many decades the
+  // base is 10^k, labelling every k-th decade, with both ends on a labelled one.
+  const int decadesPerLabel = (top - bottom + kMostLabelIntervals - 1) / kMostLabelIntervals;
+  bottom = decadesPerLabel * static_cast<int>(std::floor(double(bottom) / decadesPerLabel));
+  top = decadesPerLabel * static_cast<int>(std::ceil(double(top) / decadesPerLabel));
+  axis->setBase(std::pow(10.0, decadesPerLabel));
+  axis->setRange(std::pow(10.0, bottom), std::pow(10.0, top));
   // Minor lines at 2…9 help read a few decades; across many they only add noise.
-  const bool fewDecades = top / bottom <= 1e3;
+  const bool fewDecades = top - bottom <= 3;
   axis->setMinorTickCount(fewDecades ? 8 : 0);
   axis->setGridLineVisible(true);
   axis->setMinorGridLineVisible(fewDecades);
