@@ -21,6 +21,14 @@ namespace {
 
 /// Labelled intervals on a log axis at the most: about 40 px each on a panel 320 px high.
 constexpr int kMostLabelIntervals = 6;
+/// The lowest top a log axis may have (as a power of ten). Qt Charts 6.4 draws neither value
+/// labels nor title on a log axis spanning less than about 1e-11 (measured: 1e-17 to 1e-14
+/// shows nothing, 1e-17 to 1e-11 every label), as an energy panel of exact-to-rounding
+/// methods would be.
+constexpr int kLeastTopExponent = -11;
+/// Qt rounds log10 of the axis' bottom up past its decade and drops that label (1e-4 and 1e-13
+/// went unlabelled): a hair below it keeps the label.
+constexpr double kBottomNudge = 1.0 - 1e-9;
 
 }  // namespace
 
@@ -64,7 +72,8 @@ QLogValueAxis* decadeAxis(const QString& title, double low, double high, const c
   if (!(high >= low) || !std::isfinite(high)) high = low;
   // The decade exponents of doubles are within ±324: ints hold them.
   int bottom = static_cast<int>(std::floor(std::log10(low)));
-  int top = std::max(static_cast<int>(std::ceil(std::log10(high))), bottom + 1);
+  int top =
+      std::max({static_cast<int>(std::ceil(std::log10(high))), bottom + 1, kLeastTopExponent});
   // Qt labels every power of the base, and elides them all to "…" when they crowd (a panel of
   // 17 decades, an exact method's zero error beside percent-level ones): over many decades the
   // base is 10^k, labelling every k-th decade, with both ends on a labelled one.
@@ -72,7 +81,7 @@ QLogValueAxis* decadeAxis(const QString& title, double low, double high, const c
   bottom = decadesPerLabel * static_cast<int>(std::floor(double(bottom) / decadesPerLabel));
   top = decadesPerLabel * static_cast<int>(std::ceil(double(top) / decadesPerLabel));
   axis->setBase(std::pow(10.0, decadesPerLabel));
-  axis->setRange(std::pow(10.0, bottom), std::pow(10.0, top));
+  axis->setRange(std::pow(10.0, bottom) * kBottomNudge, std::pow(10.0, top));
   // Minor lines at 2…9 help read a few decades; across many they only add noise.
   const bool fewDecades = top - bottom <= 3;
   axis->setMinorTickCount(fewDecades ? 8 : 0);

@@ -20,9 +20,10 @@ QColor backendColor(std::string_view backend);
 double decadeBelow(double value);
 double decadeAbove(double value);
 
-/// A log axis over whole decades around [low, high] (at least one decade), labelled at 1, 10,
-/// 100, … or, over more than six decades, every k-th decade so that at most six intervals are
-/// labelled; `labelFormat` is printf-style, e.g. "%g" or "%.0e".
+/// A log axis over whole decades around [low, high] (at least one decade, and up to 1e-11 at
+/// least, below which Qt draws no labels), labelled at 1, 10, 100, … or, over more than six
+/// decades, every k-th decade so that at most six intervals are labelled; `labelFormat` is
+/// printf-style, e.g. "%g" or "%.0e".
 QLogValueAxis* decadeAxis(const QString& title, double low, double high, const char* labelFormat);
 
 /// Adds `series` to `chart` on the axes `x` and `y`; with `inLegend` false it has no legend entry
