@@ -13,30 +13,26 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPixmap>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
-#include <QTimer>
 #include <QVBoxLayout>
-#include <cmath>
-#include <exception>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "capacity_chart_builder.h"
 #include "checklist.h"
 #include "dark_theme.h"
 #include "registry.h"
+#include "tool_run_panel.h"
 #include "view_text.h"
 
 namespace fooball::gui {
 
 namespace {
-
-constexpr int kProgressSteps = 1000;  ///< the progress bar's maximum: 0.1 % resolution
-constexpr int kElapsedRefreshMs = 200;
 
 QString noteOf(const measure::SearchOutcome& outcome) {
   if (outcome.reachedMaxBalls) return QObject::tr("the scene format's limit: capacity is higher");
@@ -60,44 +56,27 @@ BenchmarkDialog::BenchmarkDialog(QWidget* parent) : QDialog(parent) {
           .arg(measure::CapacitySettings{}.timedSteps));
   intro->setWordWrap(true);
 
-  start_ = new QPushButton(tr("&Start"));
-  start_->setToolTip(tr("Run the capacity search for the checked backends"));
-  cancel_ = new QPushButton(tr("&Cancel run"));
-  cancel_->setToolTip(tr("Stop the search; it ends within one physics step"));
-  progress_ = new QProgressBar;
-  progress_->setRange(0, kProgressSteps);
-  progress_->setValue(0);
-  progress_->setToolTip(tr("An estimate of the whole run's progress"));
-  status_ = new QLabel(tr("Not started"));
-  status_->setToolTip(tr("The backend and ball count measured last, and the time elapsed"));
-  error_ = new QLabel;
-  error_->setObjectName(QStringLiteral("benchmarkError"));
-  error_->setStyleSheet(QStringLiteral("color: #ff7b7b;"));
-  error_->setWordWrap(true);
-  error_->hide();
-  connect(start_, &QPushButton::clicked, this, &BenchmarkDialog::start);
-  connect(cancel_, &QPushButton::clicked, this, &BenchmarkDialog::cancel);
-
-  auto* runRow = new QHBoxLayout;
-  runRow->addWidget(start_);
-  runRow->addWidget(cancel_);
-  runRow->addWidget(progress_, 1);
+  run_ = new ToolRunPanel(ToolRunPanel::OnCancel::ShowFinished);
+  run_->startButton()->setToolTip(tr("Run the capacity search for the checked backends"));
+  run_->statusLabel()->setToolTip(
+      tr("The backend and ball count measured last, and the time elapsed"));
+  connect(run_, &ToolRunPanel::startRequested, this, [this] { start(); });
+  connect(run_, &ToolRunPanel::runStarted, this, [this] {
+    updateButtons();
+    emit runStarted();
+  });
+  connect(run_, &ToolRunPanel::runFinished, this, [this] {
+    liveResults_.clear();
+    showResults();
+    updateButtons();
+    emit runFinished();
+  });
 
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(intro);
   layout->addWidget(createSettings());
-  layout->addLayout(runRow);
-  layout->addWidget(status_);
-  layout->addWidget(error_);
+  layout->addWidget(run_);
   layout->addWidget(createResults(), 1);
-
-  elapsedTimer_ = new QTimer(this);
-  elapsedTimer_->setInterval(kElapsedRefreshMs);
-  connect(elapsedTimer_, &QTimer::timeout, this, [this] {
-    status_->setText(tr("%1 — %2 s elapsed")
-                         .arg(progressText_)
-                         .arg(double(clock_.elapsed()) / 1000.0, 0, 'f', 1));
-  });
 
   showResults();
   updateButtons();
@@ -105,8 +84,13 @@ BenchmarkDialog::BenchmarkDialog(QWidget* parent) : QDialog(parent) {
 }
 
 BenchmarkDialog::~BenchmarkDialog() {
-  worker_.request_stop();
-  // ~jthread joins; the progress and result events the worker posted die with this object.
+  // The worker posts to this dialog (showProbe): it must be joined while the dialog is whole,
+  // not when the panel, a child, goes with the rest of it.
+  run_->stopAndJoin();
+}
+
+bool BenchmarkDialog::running() const {
+  return run_->running();
 }
 
 QWidget* BenchmarkDialog::createSettings() {
@@ -211,64 +195,49 @@ bool BenchmarkDialog::start() {
     if (chosen.empty()) throw std::invalid_argument("backends: check at least one");
     measure::checkCapacitySettings(chosen, settings);
   } catch (const std::invalid_argument& problem) {
-    showError(QString::fromStdString(problem.what()));
+    run_->showError(QString::fromStdString(problem.what()));
     return false;
   }
-  error_->hide();
   settings_ = settings;
   results_.clear();
   liveResults_.clear();
-  running_ = true;
-  showResults();
-  progress_->setValue(0);
-  progressText_ = tr("Starting %1").arg(fromView(chosen.front().name));
-  status_->setText(progressText_);
-  clock_.start();
-  elapsedTimer_->start();
-  emit runStarted();
-
-  worker_ = std::jthread([this, chosen = std::move(chosen), settings](std::stop_token stop) {
-    const auto progress = [this](const measure::CapacityProgress& at) {
+  const QString first = fromView(chosen.front().name);
+  const auto job = [this, chosen = std::move(chosen), settings](
+                       std::stop_token stop, const ToolRunPanel::Report& report) {
+    const auto progress = [this, &report](const measure::CapacityProgress& at) {
+      const measure::Probe& latest = at.search.latest;
       QMetaObject::invokeMethod(
           this,
-          [this, backend = fromView(at.backend), index = at.backendIndex, count = at.backendCount,
-           balls = at.search.latest.balls, ms = at.search.latest.medianStepMs,
-           fraction = at.fraction] { showProgress(backend, index, count, balls, ms, fraction); },
+          [this, backend = std::string(at.backend), latest] {
+            showProbe(backend, latest.balls, latest.medianStepMs);
+          },
           Qt::QueuedConnection);
+      report(at.fraction, tr("%1 (%2 of %3): %L4 balls, median step %5 ms")
+                              .arg(fromView(at.backend))
+                              .arg(at.backendIndex + 1)
+                              .arg(at.backendCount)
+                              .arg(latest.balls)
+                              .arg(latest.medianStepMs, 0, 'g', 3));
     };
-    std::vector<measure::CapacityResult> results;
-    QString failure;
-    try {
-      results = measure::measureCapacity(chosen, settings, progress, stop);
-    } catch (const std::exception& problem) {
-      failure = QString::fromStdString(problem.what());
-    }
-    QMetaObject::invokeMethod(
-        this,
-        [this, results = std::move(results), failure]() mutable {
-          finishRun(std::move(results), failure);
-        },
-        Qt::QueuedConnection);
-  });
-  updateButtons();
+    std::vector<measure::CapacityResult> results =
+        measure::measureCapacity(chosen, settings, progress, stop);
+    // A search cut short measured no capacity: its best count so far is no result.
+    std::erase_if(results,
+                  [](const measure::CapacityResult& result) { return result.outcome.cancelled; });
+    return std::function<void()>([this, results = std::move(results)] { results_ = results; });
+  };
+  if (!run_->start(job, tr("Starting %1").arg(first))) return false;
+  showResults();  // an empty table, and the chart waiting for its first count
   return true;
 }
 
-void BenchmarkDialog::cancel() {
+void BenchmarkDialog::showProbe(const std::string& backend, std::size_t balls,
+                                double medianStepMs) {
   if (!running()) return;
-  worker_.request_stop();
-  progressText_ = tr("Cancelling…");
-  status_->setText(progressText_);
-}
-
-void BenchmarkDialog::showProgress(const QString& backend, std::size_t index, std::size_t count,
-                                   std::size_t balls, double medianStepMs, double fraction) {
-  if (!running() || worker_.get_stop_token().stop_requested()) return;
   // The chart fills in while the search goes: every count measured so far, and the best one
   // within the budget as the capacity found so far.
-  const std::string name = backend.toStdString();
-  if (liveResults_.empty() || liveResults_.back().backend != name) {
-    liveResults_.push_back({name, {}, {}});
+  if (liveResults_.empty() || liveResults_.back().backend != backend) {
+    liveResults_.push_back({backend, {}, {}});
   }
   measure::SearchOutcome& outcome = liveResults_.back().outcome;
   outcome.probes.push_back({balls, medianStepMs});
@@ -277,41 +246,6 @@ void BenchmarkDialog::showProgress(const QString& backend, std::size_t index, st
     outcome.medianStepMs = medianStepMs;
   }
   showChart(liveResults_);
-  progress_->setValue(static_cast<int>(std::lround(fraction * kProgressSteps)));
-  progressText_ = tr("%1 (%2 of %3): %L4 balls, median step %5 ms")
-                      .arg(backend)
-                      .arg(index + 1)
-                      .arg(count)
-                      .arg(balls)
-                      .arg(medianStepMs, 0, 'g', 3);
-  status_->setText(progressText_);
-}
-
-void BenchmarkDialog::finishRun(std::vector<measure::CapacityResult> results,
-                                const QString& failure) {
-  const bool cancelled = worker_.get_stop_token().stop_requested();
-  if (worker_.joinable()) worker_.join();
-  running_ = false;
-  elapsedTimer_->stop();
-  // A search cut short measured no capacity: its best count so far is no result.
-  std::erase_if(results,
-                [](const measure::CapacityResult& result) { return result.outcome.cancelled; });
-  results_ = std::move(results);
-  liveResults_.clear();
-  const double seconds = double(clock_.elapsed()) / 1000.0;
-  if (!failure.isEmpty()) {
-    showError(failure);
-    status_->setText(tr("Failed after %1 s").arg(seconds, 0, 'f', 1));
-  } else if (cancelled) {
-    status_->setText(
-        tr("Cancelled after %1 s; only the backends finished are shown").arg(seconds, 0, 'f', 1));
-  } else {
-    progress_->setValue(kProgressSteps);
-    status_->setText(tr("Done in %1 s").arg(seconds, 0, 'f', 1));
-  }
-  showResults();
-  updateButtons();
-  emit runFinished();
 }
 
 void BenchmarkDialog::showResults() {
@@ -352,15 +286,8 @@ void BenchmarkDialog::showChart(std::span<const measure::CapacityResult> results
   delete previous;
 }
 
-void BenchmarkDialog::showError(const QString& message) {
-  error_->setText(message);
-  error_->show();
-}
-
 void BenchmarkDialog::updateButtons() {
   const bool busy = running();
-  start_->setEnabled(!busy);
-  cancel_->setEnabled(busy);
   backends_->setEnabled(!busy);
   budget_->setEnabled(!busy);
   options_->setEnabled(!busy);
@@ -373,7 +300,7 @@ bool BenchmarkDialog::saveCsv(const QString& path) {
   measure::writeCapacityCsv(csv, results_);
   csv.close();
   if (!csv) {
-    showError(tr("%1: cannot write the CSV file").arg(path));
+    run_->showError(tr("%1: cannot write the CSV file").arg(path));
     return false;
   }
   return true;
@@ -381,26 +308,19 @@ bool BenchmarkDialog::saveCsv(const QString& path) {
 
 bool BenchmarkDialog::savePng(const QString& path) {
   if (!chartView_->grab().save(path, "PNG")) {
-    showError(tr("%1: cannot write the PNG image").arg(path));
+    run_->showError(tr("%1: cannot write the PNG image").arg(path));
     return false;
   }
   return true;
 }
 
-void BenchmarkDialog::stopAndJoin() {
-  if (!worker_.joinable()) return;
-  worker_.request_stop();
-  worker_.join();
-  // finishRun still comes (the worker posted it) and shows what was finished.
-}
-
 void BenchmarkDialog::closeEvent(QCloseEvent* event) {
-  stopAndJoin();
+  run_->stopAndJoin();
   QDialog::closeEvent(event);
 }
 
 void BenchmarkDialog::reject() {
-  stopAndJoin();
+  run_->stopAndJoin();
   QDialog::reject();
 }
 

@@ -22,13 +22,16 @@ QString secondsText(const QElapsedTimer& clock) {
 
 }  // namespace
 
-ToolRunPanel::ToolRunPanel(QWidget* parent) : QWidget(parent) {
+ToolRunPanel::ToolRunPanel(OnCancel onCancel, QWidget* parent)
+    : QWidget(parent), onCancel_(onCancel) {
   start_ = new QPushButton(tr("&Start"));
   start_->setToolTip(tr("Run the measurement with the settings above"));
   cancel_ = new QPushButton(tr("&Cancel run"));
-  cancel_->setToolTip(
-      tr("Stop the run; it ends after the measurement under way and shows "
-         "nothing of it"));
+  cancel_->setToolTip(onCancel == OnCancel::ShowNothing
+                          ? tr("Stop the run; it ends after the measurement under way and "
+                               "shows nothing of it")
+                          : tr("Stop the run; it ends after the measurement under way and "
+                               "shows what it finished"));
   cancel_->setEnabled(false);
   progress_ = new QProgressBar;
   progress_->setRange(0, kProgressSteps);
@@ -118,10 +121,14 @@ void ToolRunPanel::finishRun(const std::function<void()>& showResults, const QSt
   if (!failure.isEmpty()) {
     showError(failure);
     status_->setText(tr("Failed after %1 s").arg(secondsText(clock_)));
-  } else if (cancelled) {
+  } else if (cancelled && onCancel_ == OnCancel::ShowNothing) {
     progress_->setValue(0);
     status_->setText(
         tr("Cancelled after %1 s; nothing of the run is shown").arg(secondsText(clock_)));
+  } else if (cancelled) {
+    status_->setText(
+        tr("Cancelled after %1 s; only what it finished is shown").arg(secondsText(clock_)));
+    if (showResults) showResults();
   } else {
     progress_->setValue(kProgressSteps);
     status_->setText(tr("Done in %1 s").arg(secondsText(clock_)));

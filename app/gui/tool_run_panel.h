@@ -26,11 +26,16 @@ class ToolRunPanel : public QWidget {
   /// done, in [0, 1], and what it is doing.
   using Report = std::function<void(double fraction, const QString& doing)>;
   /// Runs on the worker; returns what shows its results, which the panel calls on the GUI thread
-  /// when the job ended by itself. A cancelled job's results are dropped: no half result shows.
+  /// when the job ended by itself, or also when it was cancelled under OnCancel::ShowFinished.
   /// The job throws std::exception to fail with one line of error.
   using Job = std::function<std::function<void()>(std::stop_token stop, const Report& report)>;
 
-  explicit ToolRunPanel(QWidget* parent = nullptr);
+  /// What a cancelled run shows. A trade-off or a failure map cancelled midway would be half a
+  /// result: nothing shows. A benchmark's results are per backend, each whole: the backends it
+  /// finished show.
+  enum class OnCancel { ShowNothing, ShowFinished };
+
+  explicit ToolRunPanel(OnCancel onCancel = OnCancel::ShowNothing, QWidget* parent = nullptr);
   /// Stops a run and waits for its thread.
   ~ToolRunPanel() override;
 
@@ -71,6 +76,7 @@ class ToolRunPanel : public QWidget {
   QElapsedTimer clock_;
   QString doing_;  ///< the latest progress, without the elapsed time
   bool running_ = false;
+  OnCancel onCancel_;
   std::jthread worker_;  ///< last: destroyed (stopped and joined) before the widgets
 };
 

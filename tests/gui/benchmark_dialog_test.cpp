@@ -20,6 +20,7 @@
 
 #include "gui_fixture.h"
 #include "run_list_editor.h"
+#include "tool_run_panel.h"
 #include "window_actions.h"
 
 namespace fooball::gui::testing {
@@ -95,7 +96,7 @@ TEST_F(Benchmark, ChartShowsEachCountAsItIsMeasured) {
   EXPECT_TRUE(dialog->running());
   for (const QAbstractAxis* axis : dialog->chartView()->chart()->axes())
     EXPECT_TRUE(axis->isVisible());
-  dialog->cancel();
+  dialog->runPanel()->cancel();
   ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 10.0 * slowdown()));
 }
 
@@ -105,8 +106,9 @@ TEST_F(Benchmark, CancelledRunAddsNoResult) {
   // One backend with a budget it never reaches: the search is still going when cancelled.
   choose(dialog, QStringLiteral("elastic"), QStringLiteral("1000"));
   ASSERT_TRUE(dialog->start());
-  ASSERT_TRUE(waitUntil([&] { return dialog->progressBar()->value() > 0; }, 20.0 * slowdown()));
-  dialog->cancel();
+  ASSERT_TRUE(
+      waitUntil([&] { return dialog->runPanel()->progressBar()->value() > 0; }, 20.0 * slowdown()));
+  dialog->runPanel()->cancel();
   ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 10.0 * slowdown()));
   EXPECT_TRUE(dialog->results().empty());
   EXPECT_EQ(dialog->resultsTable()->rowCount(), 0);
@@ -130,7 +132,7 @@ TEST_F(Benchmark, ToolsMenuOpensTheDialog) {
   for (int row = 0; row < dialog->backendList()->count(); ++row)
     EXPECT_EQ(dialog->backendList()->item(row)->checkState(), Qt::Checked) << "all by default";
   EXPECT_EQ(dialog->budgetEdit()->text(), QStringLiteral("16.67"));
-  EXPECT_FALSE(dialog->cancelButton()->isEnabled());
+  EXPECT_FALSE(dialog->runPanel()->cancelButton()->isEnabled());
 }
 
 TEST_F(Benchmark, TinyBudgetRunGivesACapacityWithoutBlockingTheWindow) {
@@ -153,18 +155,19 @@ TEST_F(Benchmark, TinyBudgetRunGivesACapacityWithoutBlockingTheWindow) {
   };
   QMetaObject::invokeMethod(dialog, beat, Qt::QueuedConnection);
 
-  QTest::mouseClick(dialog->startButton(), Qt::LeftButton);
+  QTest::mouseClick(dialog->runPanel()->startButton(), Qt::LeftButton);
   EXPECT_TRUE(dialog->running()) << "Start returned before the search ended";
   EXPECT_TRUE(runs().paused()) << "the simulation pauses while the benchmark measures";
-  EXPECT_TRUE(dialog->cancelButton()->isEnabled());
-  EXPECT_FALSE(dialog->startButton()->isEnabled());
+  EXPECT_TRUE(dialog->runPanel()->cancelButton()->isEnabled());
+  EXPECT_FALSE(dialog->runPanel()->startButton()->isEnabled());
   ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 20.0 * slowdown()));
   beating = false;
   QCoreApplication::processEvents();  // the last beat sees `beating` off and posts no more
 
   EXPECT_GT(beatsDuringRun, 1) << "the event loop ran while the search did";
   EXPECT_FALSE(runs().paused()) << "the simulation continues after the run";
-  EXPECT_EQ(dialog->progressBar()->value(), dialog->progressBar()->maximum());
+  EXPECT_EQ(dialog->runPanel()->progressBar()->value(),
+            dialog->runPanel()->progressBar()->maximum());
   ASSERT_EQ(dialog->results().size(), 1u);
   EXPECT_EQ(dialog->results()[0].backend, "elastic");
   EXPECT_GT(dialog->results()[0].outcome.balls, 0u);
@@ -173,7 +176,7 @@ TEST_F(Benchmark, TinyBudgetRunGivesACapacityWithoutBlockingTheWindow) {
   EXPECT_EQ(dialog->resultsTable()->item(0, 0)->text(), QStringLiteral("elastic"));
   EXPECT_EQ(dialog->resultsTable()->item(0, 1)->text().toULongLong(),
             dialog->results()[0].outcome.balls);
-  EXPECT_TRUE(dialog->errorLabel()->isHidden());
+  EXPECT_TRUE(dialog->runPanel()->errorLabel()->isHidden());
 
   const QTemporaryDir directory;
   const QString csvPath = directory.filePath(QStringLiteral("capacity.csv"));
@@ -211,17 +214,17 @@ TEST_F(Benchmark, CancelStopsALongRunPromptly) {
   choose(dialog, QString(), QStringLiteral("1000"));
   ASSERT_TRUE(dialog->start());
   // Let it measure a count or two first.
-  waitUntil([&] { return dialog->progressBar()->value() > 0; }, 2.0);
+  waitUntil([&] { return dialog->runPanel()->progressBar()->value() > 0; }, 2.0);
   QElapsedTimer clock;
   clock.start();
-  QTest::mouseClick(dialog->cancelButton(), Qt::LeftButton);
+  QTest::mouseClick(dialog->runPanel()->cancelButton(), Qt::LeftButton);
   // The search checks for a stop every step; the largest step of the first seconds of the
   // search is far below this bound.
   ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 10.0 * slowdown()));
   EXPECT_LT(double(clock.elapsed()), 10'000.0 * slowdown());
   EXPECT_LT(dialog->results().size(), registeredBackends().size());
   EXPECT_FALSE(runs().paused());
-  EXPECT_TRUE(dialog->startButton()->isEnabled()) << "ready for another run";
+  EXPECT_TRUE(dialog->runPanel()->startButton()->isEnabled()) << "ready for another run";
 }
 
 TEST_F(Benchmark, ClosingTheDialogMidRunCancelsIt) {
@@ -254,11 +257,12 @@ TEST_F(Benchmark, BadBudgetShowsOneErrorAndStartsNothing) {
   for (const QString& budget : {QStringLiteral("0"), QStringLiteral("-2"), QStringLiteral("nan"),
                                 QStringLiteral("fast"), QString()}) {
     choose(dialog, QStringLiteral("elastic"), budget);
-    QTest::mouseClick(dialog->startButton(), Qt::LeftButton);
+    QTest::mouseClick(dialog->runPanel()->startButton(), Qt::LeftButton);
     EXPECT_FALSE(dialog->running()) << budget.toStdString();
     EXPECT_FALSE(runs().paused());
-    EXPECT_FALSE(dialog->errorLabel()->isHidden());
-    EXPECT_EQ(dialog->errorLabel()->text(), QStringLiteral("budget: must be a number > 0"))
+    EXPECT_FALSE(dialog->runPanel()->errorLabel()->isHidden());
+    EXPECT_EQ(dialog->runPanel()->errorLabel()->text(),
+              QStringLiteral("budget: must be a number > 0"))
         << budget.toStdString();
   }
 }
@@ -269,11 +273,11 @@ TEST_F(Benchmark, UnknownOptionAndNoBackendAreErrors) {
   choose(dialog, QStringLiteral("elastic"), QStringLiteral("1"));
   dialog->optionsEdit()->setText(QStringLiteral("warp=9"));
   EXPECT_FALSE(dialog->start());
-  EXPECT_TRUE(dialog->errorLabel()->text().contains(QStringLiteral("warp")));
+  EXPECT_TRUE(dialog->runPanel()->errorLabel()->text().contains(QStringLiteral("warp")));
   dialog->optionsEdit()->clear();
   choose(dialog, QStringLiteral("no such backend"), QStringLiteral("1"));
   EXPECT_FALSE(dialog->start());
-  EXPECT_TRUE(dialog->errorLabel()->text().contains(QStringLiteral("backends")));
+  EXPECT_TRUE(dialog->runPanel()->errorLabel()->text().contains(QStringLiteral("backends")));
 }
 
 }  // namespace
