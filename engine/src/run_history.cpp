@@ -1,7 +1,6 @@
 #include "fooball/run_history.h"
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace fooball {
 
@@ -104,10 +103,6 @@ bool RunHistory::anchorDue(std::span<Simulation* const> simulations) const {
 }
 
 void RunHistory::anchor(std::span<Simulation* const> simulations) {
-  for (const Simulation* simulation : simulations) {
-    if (!simulation->backendFresh())
-      throw std::logic_error("RunHistory::anchor: a backend has stepped since it was loaded");
-  }
   keepAnchor(simulations);
   recount();
   keepWithinBound();
