@@ -9,9 +9,6 @@ namespace {
 
 constexpr int kRadiusSteps = 8;    // mask radii in 1/8 px
 constexpr int kSubpixelSteps = 4;  // mask centres in 1/4 px
-/// Balls smaller than a pixel still cover at least this fraction of one, so a dense gas of
-/// tiny balls stays visible.
-constexpr double kMinimumCoverage = 0.35;
 
 /// `colour` over `pixel` with coverage `alpha` in [0, 256], both opaque 0xffRRGGBB.
 inline quint32 blend(quint32 pixel, quint32 colour, quint32 alpha) {
@@ -75,14 +72,12 @@ void DiscRasterizer::render(Sprite& sprite, int radiusStep, int widthStep, int s
   sprite.rowEnd.assign(side, 0);
   const double cx = half + (subpixel % kSubpixelSteps + 0.5) / kSubpixelSteps;
   const double cy = half + (subpixel / kSubpixelSteps + 0.5) / kSubpixelSteps;
-  const double area = 3.14159265358979 * r * r;
   for (std::size_t y = 0; y < side; ++y) {
     std::size_t first = side;
     std::size_t last = 0;
     for (std::size_t x = 0; x < side; ++x) {
       const double distance = std::hypot(double(x) + 0.5 - cx, double(y) + 0.5 - cy);
-      double coverage = std::clamp(coverageAt(distance, r, w), 0.0, 1.0);
-      if (r < 0.5 && coverage > 0.0) coverage = std::max(area, kMinimumCoverage);
+      const double coverage = std::clamp(coverageAt(distance, r, w), 0.0, 1.0);
       const auto alpha = static_cast<std::uint8_t>(std::lround(coverage * 255.0));
       sprite.coverage[y * side + x] = alpha;
       if (alpha > 0) {

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "density_splat.h"
 #include "disc_rasterizer.h"
 #include "fooball/vec2.h"
 #include "temperature_palette.h"
@@ -156,6 +157,7 @@ class SimulationView : public QWidget {
   double topSpeed_ = 0.0;  ///< m/s at the hot end of the temperature scale, smoothed over frames
   std::vector<QImage> ballImages_;  ///< one per panel
   DiscRasterizer rasterizer_;
+  DensitySplat splat_;                    ///< the balls narrower than a pixel
   std::vector<QLineF> lines_;             ///< reused for tethers and vectors
   std::vector<std::vector<Vec2>> drawn_;  ///< m, per run: the positions drawn (driftRuns)
 };

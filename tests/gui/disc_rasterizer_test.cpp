@@ -67,12 +67,5 @@ TEST(DiscRasterizer, SmallDiscsFromMasksMatchTheDirectlyFilledOnes) {
   }
 }
 
-TEST(DiscRasterizer, SubPixelBallsStayVisible) {
-  QImage image(8, 8, QImage::Format_RGB32);
-  image.fill(Qt::black);
-  draw(image).fillDisc({4.5, 4.5}, 0.2, 0xffffff);
-  EXPECT_GT(qRed(image.pixel(4, 4)), 60);
-}
-
 }  // namespace
 }  // namespace fooball::gui
