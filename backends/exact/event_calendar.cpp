@@ -1,90 +1,167 @@
 #include "exact/event_calendar.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace fooball::exact {
 
 namespace {
 
-constexpr std::size_t kArity = 4;
-constexpr std::size_t kCacheLine = 64;  // bytes
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// Buckets in a year at the least, so a handful of balls still spread out.
+constexpr std::size_t kMinBuckets = 16;
 
 }  // namespace
 
 void EventCalendar::reset(std::size_t ballCount) {
-  constexpr std::size_t kEntriesPerLine = kCacheLine / sizeof(Entry);
-  storage_.resize(ballCount + kEntriesPerLine - 1);
-  // Entry 1 (the first child of the root, and with it every family) starts a cache line.
-  const auto lineOffset = reinterpret_cast<std::uintptr_t>(storage_.data() + 1) % kCacheLine;
-  skew_ = (kEntriesPerLine - lineOffset / sizeof(Entry)) % kEntriesPerLine;
-  size_ = ballCount;
-  heapPosition_.resize(ballCount);
-  Entry* entries = heap();
-  for (std::size_t ball = 0; ball < ballCount; ++ball) {
-    entries[ball] = {std::numeric_limits<double>::infinity(), static_cast<std::uint32_t>(ball)};
-    heapPosition_[ball] = static_cast<std::uint32_t>(ball);
+  bucketCount_ = static_cast<std::uint32_t>(std::max(kMinBuckets, kBucketsPerBall * ballCount));
+  heads_.assign(bucketCount_ + 2, kNone);
+  slots_.resize(ballCount);
+  for (std::uint32_t ball = 0; ball < ballCount; ++ball) {
+    slots_[ball].time = kInfinity;
+    put(ball, kNever);
   }
+  front_.reset(ballCount);
+  scratch_.reserve(ballCount);
+  frontBucket_ = 0;
+  yearStart_ = 0.0;
+  inverseWidth_ = 0.0;
 }
 
 void EventCalendar::set(std::uint32_t ball, double time) {
-  const std::size_t position = heapPosition_[ball];
-  const double previous = heap()[position].time;
-  if (time < previous) {
-    siftUp(position, {time, ball});
-  } else if (time > previous) {
-    siftDown(position, {time, ball});
+  Slot& slot = slots_[ball];
+  const std::uint32_t place = placeOf(time);
+  if (place == slot.place) {
+    slot.time = time;
+    if (place == kInHeap) front_.update(ball, time);  // a list is unordered: nothing to move
+    return;
   }
+  remove(ball);
+  slot.time = time;
+  put(ball, place);
+}
+
+EventHeap::Entry EventCalendar::earliest() {
+  if (front_.empty()) bringForward();
+  if (!front_.empty()) return front_.earliest();
+  const std::uint32_t ball = head(kNever);
+  return {slots_[ball].time, ball};
+}
+
+void EventCalendar::layOut() {
+  scratch_.clear();
+  for (std::uint32_t ball = 0; ball < slots_.size(); ++ball) {
+    if (slots_[ball].place != kNever) scratch_.push_back(ball);
+  }
+  front_.reset(slots_.size());
+  std::fill(heads_.begin(), heads_.begin() + bucketCount_ + 1, kNone);  // the never list stays
+  startYear(scratch_);
 }
 
 void EventCalendar::shiftOrigin(double offset) {
-  Entry* entries = heap();
-  for (std::size_t position = 0; position < size_; ++position)
-    entries[position].time -= offset;
-}
-
-void EventCalendar::place(std::size_t position, const Entry& entry) {
-  heap()[position] = entry;
-  heapPosition_[entry.ball] = static_cast<std::uint32_t>(position);
-}
-
-void EventCalendar::siftUp(std::size_t position, const Entry& entry) {
-  const Entry* entries = heap();
-  while (position > 0) {
-    const std::size_t parent = (position - 1) / kArity;
-    if (!(entry.time < entries[parent].time)) break;
-    place(position, entries[parent]);
-    position = parent;
+  yearStart_ -= offset;
+  front_.shiftTimes(offset);
+  for (std::uint32_t ball = 0; ball < slots_.size(); ++ball) {
+    Slot& slot = slots_[ball];
+    slot.time -= offset;
+    if (slot.place == kNever) continue;
+    // Rounding may carry a time that sat on a bucket's edge across it: the rare one moves.
+    const std::uint32_t place = placeOf(slot.time);
+    if (place == slot.place) continue;
+    remove(ball);
+    put(ball, place);
   }
-  place(position, entry);
 }
 
-/// Floyd's variant: the hole at `position` first sinks to the bottom along the earliest children,
-/// without comparing against the entry, then the entry rises from there. A rescheduled ball's new
-/// time usually belongs near the bottom (most entries are there), so this saves the per-level
-/// comparison with the entry and its unpredictable branch. The entry cannot rise above
-/// `position`: everything above it is earlier than its old time, hence than the new one.
-void EventCalendar::siftDown(std::size_t position, const Entry& entry) {
-  const Entry* entries = heap();
-  while (true) {
-    const std::size_t first = kArity * position + 1;
-    std::size_t earliest = first;
-    if (first + kArity <= size_) {  // a full family: a tournament decided by arithmetic, no jumps
-      const Entry* child = entries + first;
-      const auto left = static_cast<std::size_t>(child[1].time < child[0].time);
-      const std::size_t right = 2 + static_cast<std::size_t>(child[3].time < child[2].time);
-      const auto rightWins = static_cast<std::size_t>(child[right].time < child[left].time);
-      earliest = first + left + (right - left) * rightWins;
-    } else if (first < size_) {
-      for (std::size_t other = first + 1; other < size_; ++other) {
-        if (entries[other].time < entries[earliest].time) earliest = other;
+std::uint32_t EventCalendar::placeOf(double time) const {
+  if (!(time < kInfinity)) return kNever;
+  // Written so that NaN (−∞ × 0) goes to the heap too.
+  const double bucket = (time - yearStart_) * inverseWidth_;
+  if (!(bucket >= frontBucket_ + 1.0)) return kInHeap;
+  if (bucket >= bucketCount_) return kOverflow;
+  return static_cast<std::uint32_t>(bucket);
+}
+
+std::uint32_t& EventCalendar::head(std::uint32_t place) {
+  if (place == kOverflow) return heads_[bucketCount_];
+  if (place == kNever) return heads_[bucketCount_ + 1];
+  return heads_[place];
+}
+
+void EventCalendar::put(std::uint32_t ball, std::uint32_t place) {
+  Slot& slot = slots_[ball];
+  slot.place = place;
+  if (place == kInHeap) {
+    front_.insert(ball, slot.time);
+    return;
+  }
+  std::uint32_t& first = head(place);
+  slot.previous = kNone;
+  slot.next = first;
+  if (first != kNone) slots_[first].previous = ball;
+  first = ball;
+}
+
+void EventCalendar::remove(std::uint32_t ball) {
+  const Slot& slot = slots_[ball];
+  if (slot.place == kInHeap) {
+    front_.erase(ball);
+    return;
+  }
+  if (slot.previous != kNone) {
+    slots_[slot.previous].next = slot.next;
+  } else {
+    head(slot.place) = slot.next;
+  }
+  if (slot.next != kNone) slots_[slot.next].previous = slot.previous;
+}
+
+void EventCalendar::bringForward() {
+  while (front_.empty()) {
+    std::uint32_t bucket = frontBucket_ + 1;
+    while (bucket < bucketCount_ && heads_[bucket] == kNone)
+      ++bucket;
+    if (bucket < bucketCount_) {
+      frontBucket_ = bucket;
+      for (std::uint32_t ball = heads_[bucket]; ball != kNone;) {
+        Slot& slot = slots_[ball];
+        const std::uint32_t next = slot.next;
+        slot.place = kInHeap;
+        front_.insert(ball, slot.time);
+        ball = next;
       }
-    } else {
-      break;
+      heads_[bucket] = kNone;
+      return;
     }
-    place(position, entries[earliest]);
-    position = earliest;
+    std::uint32_t& overflow = head(kOverflow);
+    if (overflow == kNone) return;  // every time is +∞
+    scratch_.clear();
+    for (std::uint32_t ball = overflow; ball != kNone; ball = slots_[ball].next)
+      scratch_.push_back(ball);
+    overflow = kNone;
+    startYear(scratch_);
   }
-  siftUp(position, entry);
+}
+
+void EventCalendar::startYear(std::vector<std::uint32_t>& balls) {
+  frontBucket_ = 0;
+  yearStart_ = 0.0;
+  inverseWidth_ = 0.0;
+  if (balls.empty()) return;
+  double earliest = kInfinity;
+  double sum = 0.0;
+  for (const std::uint32_t ball : balls) {
+    earliest = std::min(earliest, slots_[ball].time);
+    sum += slots_[ball].time;
+  }
+  const double meanDelay = sum / static_cast<double>(balls.size()) - earliest;
+  const double inverseWidth = bucketCount_ / (kYearInMeanDelays * meanDelay);
+  // All at one time (or a spread too wide or narrow to divide): one bucket, the heap, holds all.
+  if (std::isfinite(inverseWidth) && inverseWidth > 0.0) inverseWidth_ = inverseWidth;
+  yearStart_ = earliest;
+  for (const std::uint32_t ball : balls)
+    put(ball, placeOf(slots_[ball].time));
 }
 
 }  // namespace fooball::exact

@@ -112,6 +112,7 @@ void EventDrivenWorld::rebuild() {
   calendar_.reset(count);
   for (std::uint32_t ball = 0; ball < count; ++ball)
     predict(ball);
+  calendar_.layOut();
   calendarValid_ = true;
 }
 
@@ -125,8 +126,7 @@ bool EventDrivenWorld::runEvents(double dt) {
   std::uint64_t simultaneous = 0;
   double previousTime = -std::numeric_limits<double>::infinity();
   while (true) {
-    const std::uint32_t ball = calendar_.earliest();
-    const double time = calendar_.earliestTime();
+    const auto [time, ball] = calendar_.earliest();
     if (!(time <= dt)) return true;
     if (static_cast<double>(statistics_.eventsThisStep) >= eventCap) return false;
     if (time == previousTime) {
