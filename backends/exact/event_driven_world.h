@@ -42,10 +42,10 @@ struct EventStatistics {
 ///
 /// Each ball keeps its state at its own last-update time and is advanced only when an event
 /// involves it; each has one entry in the calendar, the earlier of its next interaction and its
-/// next cell crossing; cells bound the partners a ball must be checked against, so an event
-/// costs O(log N) whatever N. Time inside a step runs
-/// from 0 (the step's start) to dt; at the end every ball is brought to dt and the origin moves
-/// there, so the state read between steps is exact and times stay small.
+/// next cell crossing; cells bound the partners a ball must be checked against and the calendar
+/// is a calendar queue, so an event costs O(1) whatever N. Time inside a step runs from 0 (the
+/// step's start) to dt; at the end every ball is brought to dt and the origin moves there, so
+/// the state read between steps is exact and times stay small.
 class EventDrivenWorld {
  public:
   void setLimits(const EventLimits& limits) { limits_ = limits; }
