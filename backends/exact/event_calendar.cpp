@@ -96,11 +96,7 @@ void EventCalendar::put(std::uint32_t ball, std::uint32_t place) {
     front_.insert(ball, slot.time);
     return;
   }
-  std::uint32_t& first = head(place);
-  slot.previous = kNone;
-  slot.next = first;
-  if (first != kNone) slots_[first].previous = ball;
-  first = ball;
+  linkFirst(slots_, ball, head(place));
 }
 
 void EventCalendar::remove(std::uint32_t ball) {
@@ -109,12 +105,7 @@ void EventCalendar::remove(std::uint32_t ball) {
     front_.erase(ball);
     return;
   }
-  if (slot.previous != kNone) {
-    slots_[slot.previous].next = slot.next;
-  } else {
-    head(slot.place) = slot.next;
-  }
-  if (slot.next != kNone) slots_[slot.next].previous = slot.previous;
+  exact::unlink(slots_, ball, head(slot.place));
 }
 
 void EventCalendar::bringForward() {

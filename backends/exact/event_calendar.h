@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "exact/event_heap.h"
+#include "exact/linked_lists.h"
 
 namespace fooball::exact {
 
@@ -42,7 +43,7 @@ class EventCalendar {
   void shiftOrigin(double offset);
 
  private:
-  static constexpr std::uint32_t kNone = 0xffffffffu;
+  static constexpr std::uint32_t kNone = kEndOfList;
   /// Buckets per ball: about two balls per front bucket, with the year below.
   static constexpr std::size_t kBucketsPerBall = 2;
   /// The year, in mean delays to the balls' next events: an exponential spread leaves e⁻⁴ ≈ 2%

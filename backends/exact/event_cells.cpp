@@ -45,22 +45,13 @@ void EventCells::cross(std::uint32_t ball, Side side) {
 }
 
 void EventCells::link(std::uint32_t ball) {
-  Membership& member = members_[ball];
-  std::uint32_t& head = head_[cellIndex(member.column, member.row)];
-  member.previous = kNone;
-  member.next = head;
-  if (head != kNone) members_[head].previous = ball;
-  head = ball;
+  const Membership& member = members_[ball];
+  linkFirst(members_, ball, head_[cellIndex(member.column, member.row)]);
 }
 
 void EventCells::unlink(std::uint32_t ball) {
   const Membership& member = members_[ball];
-  if (member.previous != kNone) {
-    members_[member.previous].next = member.next;
-  } else {
-    head_[cellIndex(member.column, member.row)] = member.next;
-  }
-  if (member.next != kNone) members_[member.next].previous = member.previous;
+  exact::unlink(members_, ball, head_[cellIndex(member.column, member.row)]);
 }
 
 }  // namespace fooball::exact

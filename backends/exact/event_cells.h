@@ -1,10 +1,10 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "exact/axis.h"
+#include "exact/linked_lists.h"
 #include "fooball/vec2.h"
 
 namespace fooball::exact {
@@ -17,7 +17,7 @@ namespace fooball::exact {
 /// visiting the 3×3 block around any cell needs no clipping.
 class EventCells {
  public:
-  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::uint32_t kNone = kEndOfList;
 
   /// Lays out cells of side ≥ minCellSize (m) over [0,width]×[0,height], no more than about
   /// 4 per ball so sparse scenes do not pay for empty cells, and empties them.
