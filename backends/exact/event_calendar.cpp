@@ -16,7 +16,7 @@ constexpr std::size_t kMinBuckets = 16;
 
 void EventCalendar::reset(std::size_t ballCount) {
   bucketCount_ = static_cast<std::uint32_t>(std::max(kMinBuckets, kBucketsPerBall * ballCount));
-  heads_.assign(bucketCount_ + 2, kNone);
+  heads_.assign(bucketCount_ + 2, kEndOfList);
   slots_.resize(ballCount);
   for (std::uint32_t ball = 0; ball < ballCount; ++ball) {
     slots_[ball].time = kInfinity;
@@ -55,7 +55,7 @@ void EventCalendar::layOut() {
     if (slots_[ball].place != kNever) scratch_.push_back(ball);
   }
   front_.reset(slots_.size());
-  std::fill(heads_.begin(), heads_.begin() + bucketCount_ + 1, kNone);  // the never list stays
+  std::fill(heads_.begin(), heads_.begin() + bucketCount_ + 1, kEndOfList);  // the never list stays
   startYear(scratch_);
 }
 
@@ -111,26 +111,24 @@ void EventCalendar::remove(std::uint32_t ball) {
 void EventCalendar::bringForward() {
   while (front_.empty()) {
     std::uint32_t bucket = frontBucket_ + 1;
-    while (bucket < bucketCount_ && heads_[bucket] == kNone)
+    while (bucket < bucketCount_ && heads_[bucket] == kEndOfList)
       ++bucket;
     if (bucket < bucketCount_) {
       frontBucket_ = bucket;
-      for (std::uint32_t ball = heads_[bucket]; ball != kNone;) {
-        Slot& slot = slots_[ball];
-        const std::uint32_t next = slot.next;
-        slot.place = kInHeap;
-        front_.insert(ball, slot.time);
+      for (std::uint32_t ball = heads_[bucket]; ball != kEndOfList;) {
+        const std::uint32_t next = slots_[ball].next;
+        put(ball, kInHeap);  // the list is dropped whole below: no unlinking
         ball = next;
       }
-      heads_[bucket] = kNone;
+      heads_[bucket] = kEndOfList;
       return;
     }
     std::uint32_t& overflow = head(kOverflow);
-    if (overflow == kNone) return;  // every time is +∞
+    if (overflow == kEndOfList) return;  // every time is +∞
     scratch_.clear();
-    for (std::uint32_t ball = overflow; ball != kNone; ball = slots_[ball].next)
+    for (std::uint32_t ball = overflow; ball != kEndOfList; ball = slots_[ball].next)
       scratch_.push_back(ball);
-    overflow = kNone;
+    overflow = kEndOfList;
     startYear(scratch_);
   }
 }

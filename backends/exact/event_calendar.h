@@ -43,7 +43,6 @@ class EventCalendar {
   void shiftOrigin(double offset);
 
  private:
-  static constexpr std::uint32_t kNone = kEndOfList;
   /// Buckets per ball: about two balls per front bucket, with the year below.
   static constexpr std::size_t kBucketsPerBall = 2;
   /// The year, in mean delays to the balls' next events: an exponential spread leaves e⁻⁴ ≈ 2%
@@ -58,8 +57,8 @@ class EventCalendar {
   struct Slot {
     double time;  ///< s
     std::uint32_t place;
-    std::uint32_t next;      ///< in its list, or kNone
-    std::uint32_t previous;  ///< in its list, or kNone
+    std::uint32_t next;      ///< in its list, or kEndOfList
+    std::uint32_t previous;  ///< in its list, or kEndOfList
   };
 
   std::uint32_t placeOf(double time) const;
