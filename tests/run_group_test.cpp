@@ -768,6 +768,29 @@ TEST(RunGroup, TakeDueStepsCapsAndDropsTheBacklog) {
   EXPECT_EQ(group.takeDueSteps(100.0 * kDt, 0.01), 1);
 }
 
+TEST(RunGroup, TakeDueStepsTakesNoMoreStepsThanAFrameOfSteppingHolds) {
+  RunGroup group = groupOf(threeBalls(), {"elastic"});
+  const double frame = RunGroup::kSteppingPerFrame;  // s of wall-clock stepping
+  // Steps that cost more than a frame: one a frame, whatever is due; the rest is dropped.
+  EXPECT_EQ(group.takeDueSteps(10.5 * kDt, 1.0, 1.5 * frame), 1);
+  EXPECT_EQ(group.pendingTime(), 0.0);
+  // Three fit in a frame at 0.3 of one; then the time-scale cap (4) rules, and so it does for
+  // an unknown cost (0) or a nonsense one.
+  EXPECT_EQ(group.takeDueSteps(10.5 * kDt, 1.0, 0.3 * frame), 3);
+  EXPECT_EQ(group.takeDueSteps(10.5 * kDt, 1.0, 0.01 * frame), 4);
+  EXPECT_EQ(group.takeDueSteps(10.5 * kDt, 1.0, 0.0), 4);
+  EXPECT_EQ(group.takeDueSteps(10.5 * kDt, 1.0, -1.0), 4);
+  EXPECT_EQ(group.takeDueSteps(10.5 * kDt, 1.0, std::nan("")), 4);
+  // A machine that keeps up at one dear step a frame keeps real time: the fraction of a step
+  // not due yet stays banked.
+  RunGroup steady = groupOf(threeBalls(), {"elastic"});
+  int steps = 0;
+  for (int i = 0; i < 100; ++i)
+    steps += steady.takeDueSteps(kDt, 1.0, 0.9 * frame);
+  EXPECT_GE(steps, 99);
+  EXPECT_LE(steps, 100);
+}
+
 TEST(RunGroup, TakeDueStepsKeepsRealTimeWhenTheCapIsNotExceeded) {
   // Frames of 3.8 steps with a cap of 4 per frame: the machine keeps up, so simulated time must
   // follow real time (380 steps in 100 frames, give or take the one step still accumulating).

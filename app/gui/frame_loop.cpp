@@ -36,7 +36,15 @@ FrameLoop::FrameLoop(MainWindow& window) : QObject(&window), window_(window) {
 
 void FrameLoop::advance(double elapsedSeconds) {
   RunController& runs = window_.runs();
-  const int steps = runs.advance(elapsedSeconds, timeScale_);
+  // The balls are drawn while the frame's first step runs: the state before it, carried ahead
+  // over the steps' time. The window's thread would otherwise wait for the step, then draw, and
+  // the two take about as long at 100'000 balls. Drawn now, they are not drawn again below: the
+  // next frame draws the state these steps leave.
+  bool drawn = false;
+  const int steps = runs.advance(elapsedSeconds, timeScale_, [&] {
+    window_.view()->repaint();
+    drawn = true;
+  });
   frameRate_.addFrame(steps);
   if (steps > 0) {
     if (++framesSinceSample_ >= kFramesPerSample) {
@@ -53,7 +61,7 @@ void FrameLoop::advance(double elapsedSeconds) {
       window_.showStatistics();
     }
   }
-  window_.view()->update();
+  if (!drawn) window_.view()->update();
 }
 
 void FrameLoop::start() {

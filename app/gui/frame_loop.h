@@ -12,15 +12,18 @@ namespace fooball::gui {
 class MainWindow;
 
 /// The window's frames: a ~60 Hz timer that turns elapsed real time (times the speed slider)
-/// into physics steps, feeds the charts every few frames and the readouts and statistics a few
-/// times a second, and asks for a repaint. --frames drives advance() itself.
+/// into physics steps, draws the balls while the first of them runs, feeds the charts every few
+/// frames and the readouts and statistics a few times a second. --frames drives advance()
+/// itself.
 class FrameLoop : public QObject {
   Q_OBJECT
 
  public:
   explicit FrameLoop(MainWindow& window);
 
-  /// One frame: the steps `elapsedSeconds` of real time hold, samples, readouts, repaint.
+  /// One frame: the steps `elapsedSeconds` of real time hold, with the balls drawn (the state
+  /// before them) while the first runs, or after the frame when it steps none; samples,
+  /// readouts.
   void advance(double elapsedSeconds);
   void start();
   /// After a pause: the time paused is not caught up.

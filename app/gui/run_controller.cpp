@@ -151,9 +151,11 @@ void RunController::setPaused(bool paused) {
   emit pausedChanged(paused);
 }
 
-int RunController::advance(double elapsedSeconds, double timeScale) {
+int RunController::advance(double elapsedSeconds, double timeScale,
+                           const std::function<void()>& whileFirstStepRuns) {
   if (stepping()) return collectSteps(std::chrono::milliseconds(0)) ? 1 : 0;
-  return stepRuns(group_.takeDueSteps(elapsedSeconds, timeScale));
+  return stepRuns(group_.takeDueSteps(elapsedSeconds, timeScale, lastStepSeconds_),
+                  whileFirstStepRuns);
 }
 
 void RunController::rewindTo(std::size_t index) {
@@ -172,11 +174,16 @@ void RunController::stepOnce() {
   if (!stepping()) stepRuns(1);
 }
 
-int RunController::stepRuns(int steps) {
+int RunController::stepRuns(int steps, const std::function<void()>& whileFirstStepRuns) {
   for (int finished = 0; finished < steps; ++finished) {
     group_.beginSteps(steps_);
     for (std::size_t i = 0; i < steps_.size(); ++i)
       workers_[i]->start(std::move(steps_[i]));
+    if (finished == 0 && whileFirstStepRuns) {
+      stepsOut_ = steps;
+      whileFirstStepRuns();
+      stepsOut_ = 0;
+    }
     if (!collectSteps(stepPatience_)) {
       group_.dropBacklog();  // a slow step: no catching up after it
       return finished;
@@ -190,9 +197,12 @@ bool RunController::collectSteps(std::chrono::milliseconds patience) {
   for (std::size_t i = 0; i < steps_.size(); ++i) {
     if (!workers_[i]->finishedBy(deadline)) return false;
   }
+  lastStepSeconds_ = 0.0;
   for (std::size_t i = 0; i < steps_.size(); ++i) {
+    const double seconds = workers_[i]->seconds();
+    lastStepSeconds_ = std::max(lastStepSeconds_, seconds);
     if (i < timing_.size()) {
-      timing_[i].millisecondsPerStep = workers_[i]->seconds() * 1e3;
+      timing_[i].millisecondsPerStep = seconds * 1e3;
       ++timing_[i].stepsTaken;
     }
     steps_[i] = workers_[i]->take();

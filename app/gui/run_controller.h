@@ -5,6 +5,7 @@
 #include <QStringList>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -88,8 +89,12 @@ class RunController : public QObject {
   bool paused() const { return group_.paused(); }
   void setPaused(bool paused);
   /// Real-time driving: runs the whole steps `elapsedSeconds`·`timeScale` holds (none while
-  /// paused), the same number in every run. Returns the steps run.
-  int advance(double elapsedSeconds, double timeScale);
+  /// paused), the same number in every run. Returns the steps run. `whileFirstStepRuns`, if
+  /// set, is called once the first of them is out on the workers and before waiting for it:
+  /// the window draws the state before the steps then, on a core the step leaves idle, instead
+  /// of after them (drawAhead() carries that state over the steps' time).
+  int advance(double elapsedSeconds, double timeScale,
+              const std::function<void()>& whileFirstStepRuns = {});
   /// One step of every run, paused or not.
   void stepOnce();
   /// Every run and the baseline back at moment `index` of the group's history (RunGroup::
@@ -98,6 +103,10 @@ class RunController : public QObject {
   /// One moment back (RunGroup::stepBack); emits rewound.
   void stepBack();
   StepTiming stepTiming(int index) const { return timing_.at(std::size_t(index)); }
+  /// s the last lockstep step took: its slowest worker's, the baseline's included. advance()
+  /// takes no more steps a frame than a frame's time holds at this cost (RunGroup::
+  /// takeDueSteps).
+  double lastStepSeconds() const { return lastStepSeconds_; }
 
   /// How long advance() and stepOnce() wait for a step before leaving it to run in the
   /// background: long enough for any step that keeps a frame rate, short enough to be a hitch
@@ -110,6 +119,10 @@ class RunController : public QObject {
   bool stepping() const { return group_.stepping(); }
   /// s the step still running has taken so far (the slowest run's), 0 when none.
   double stepSeconds() const;
+  /// s of simulated time a view draws the balls ahead of the state it shows
+  /// (driftedPositions): the time not stepped yet (RunGroup::pendingTime), and during
+  /// advance()'s whileFirstStepRuns also the time of the steps it is running.
+  double drawAhead() const { return group_.pendingTime() + stepsOut_ * group_.dt(); }
 
  signals:
   /// A run's backend changed, or runs were added or removed.
@@ -127,8 +140,9 @@ class RunController : public QObject {
   void selectionChanged(std::optional<std::size_t> index);
 
  private:
-  /// Runs `steps` steps of every run; returns how many finished (the last may still be running).
-  int stepRuns(int steps);
+  /// Runs `steps` steps of every run, calling `whileFirstStepRuns` (if set) while the first is
+  /// out; returns how many finished (the last may still be running).
+  int stepRuns(int steps, const std::function<void()>& whileFirstStepRuns = {});
   /// Finishes the runs' steps if all are done within `patience`; false (nothing finished) if not.
   bool collectSteps(std::chrono::milliseconds patience);
   /// Gives up a step still running (see the class comment), so the backends are here to change.
@@ -141,6 +155,8 @@ class RunController : public QObject {
   std::vector<std::unique_ptr<StepWorker>> workers_;
   std::vector<StepTiming> timing_;
   std::chrono::milliseconds stepPatience_ = kDefaultStepPatience;
+  int stepsOut_ = 0;  ///< steps of advance() whose time drawAhead() adds: only while drawing
+  double lastStepSeconds_ = 0.0;
 };
 
 }  // namespace fooball::gui

@@ -304,7 +304,7 @@ void SimulationView::driftRuns() {
   // Every run is drawn the same time ahead: they are in lockstep, so their drawn states stay
   // comparable. The selection, vectors, tethers and centre of mass are drawn from these too,
   // so they move with the balls.
-  const double ahead = runs_.group().pendingTime();
+  const double ahead = runs_.drawAhead();
   drawn_.resize(std::size_t(runs_.runCount()));
   for (int runIndex = 0; runIndex < runs_.runCount(); ++runIndex)
     driftedPositions(runs_.run(runIndex), ahead, drawn_[std::size_t(runIndex)]);

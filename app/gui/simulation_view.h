@@ -64,8 +64,8 @@ class SimulationView : public QWidget {
   std::vector<Caption> captions() const;
 
   /// Where the last paint drew run `runIndex`'s balls (m): its stepped state carried ahead by
-  /// the simulated time not stepped yet (RunGroup::pendingTime, driftedPositions), so slow
-  /// motion moves every frame; exactly the stepped state while paused.
+  /// the simulated time it does not hold yet (RunController::drawAhead, driftedPositions), so
+  /// slow motion moves every frame; exactly the stepped state while paused.
   std::span<const Vec2> drawnPositions(int runIndex) const {
     return drawn_.at(std::size_t(runIndex));
   }

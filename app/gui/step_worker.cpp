@@ -20,16 +20,20 @@ std::atomic<int> givenUpSteps = 0;
 struct StepWorker::Shared {
   std::mutex mutex;
   std::condition_variable changed;
-  std::optional<BackendStep> step;  ///< started and not yet taken
-  bool done = false;                ///< the step has run
-  bool givenUp = false;             ///< the window is gone: finish the step, if any, and end
-  std::exception_ptr error;         ///< what the step threw
+  std::optional<BackendStep> step;                ///< started and not yet taken
+  std::chrono::steady_clock::time_point started;  ///< handed over, then begun on the thread
+  std::chrono::steady_clock::duration ran{};      ///< how long the step ran, once done
+  bool done = false;                              ///< the step has run
+  bool givenUp = false;      ///< the window is gone: finish the step, if any, and end
+  std::exception_ptr error;  ///< what the step threw
 
   void serve() {
     std::unique_lock lock(mutex);
     while (true) {
       changed.wait(lock, [this] { return givenUp || (step && !done); });
       if (step && !done) {
+        // The step's cost starts here, not at start(): waking this thread is none of it.
+        started = std::chrono::steady_clock::now();
         lock.unlock();
         std::exception_ptr thrown;
         try {
@@ -38,6 +42,7 @@ struct StepWorker::Shared {
           thrown = std::current_exception();  // take() throws it on the window's thread
         }
         lock.lock();
+        ran = std::chrono::steady_clock::now() - started;
         error = thrown;
         done = true;
         changed.notify_all();
@@ -66,11 +71,11 @@ void StepWorker::start(BackendStep step) {
   {
     const std::lock_guard lock(shared_->mutex);
     shared_->step = std::move(step);
+    shared_->started = std::chrono::steady_clock::now();
     shared_->done = false;
     shared_->error = nullptr;
   }
   busy_ = true;
-  clock_.start();
   shared_->changed.notify_all();
 }
 
@@ -86,6 +91,13 @@ BackendStep StepWorker::take() {
   BackendStep step = std::move(*shared_->step);
   shared_->step.reset();
   return step;
+}
+
+double StepWorker::seconds() const {
+  const std::lock_guard lock(shared_->mutex);
+  const auto ran =
+      shared_->done ? shared_->ran : std::chrono::steady_clock::now() - shared_->started;
+  return std::chrono::duration<double>(ran).count();
 }
 
 int StepWorker::givenUpStepsRunning() {

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <QElapsedTimer>
 #include <chrono>
 #include <memory>
 
@@ -28,8 +27,9 @@ class StepWorker {
   /// The finished step, for Simulation::finishStep(); only after finishedBy() said so. Throws
   /// what the step threw.
   BackendStep take();
-  /// s since the step started.
-  double seconds() const { return double(clock_.nsecsElapsed()) * 1e-9; }
+  /// s the step has run: so far while it runs, its whole run once it has finished (not the
+  /// time until take(): the window draws while a step runs, and may take it late).
+  double seconds() const;
 
   /// Steps given up on whose threads have not finished them yet (all workers together).
   static int givenUpStepsRunning();
@@ -38,7 +38,6 @@ class StepWorker {
   struct Shared;
   std::shared_ptr<Shared> shared_;  ///< also held by the thread until it ends
   bool busy_ = false;
-  QElapsedTimer clock_;
 };
 
 }  // namespace fooball::gui

@@ -415,12 +415,16 @@ void RunGroup::setPaused(bool paused) {
   accumulator_ = 0.0;
 }
 
-int RunGroup::takeDueSteps(double elapsedSeconds, double timeScale) {
+int RunGroup::takeDueSteps(double elapsedSeconds, double timeScale, double secondsPerStep) {
   if (paused_) return 0;
   const double simulated = elapsedSeconds * timeScale;
   if (simulated > 0.0 && std::isfinite(simulated)) accumulator_ += simulated;
-  const int maxSteps =
+  int maxSteps =
       std::max(1, static_cast<int>(std::ceil(kMaxStepsPerFramePerTimeScale * timeScale)));
+  if (secondsPerStep > 0.0) {
+    const double affordable = std::floor(kSteppingPerFrame / secondsPerStep);
+    if (affordable < maxSteps) maxSteps = std::max(1, static_cast<int>(affordable));
+  }
   const double due = std::floor(accumulator_ / dt());
   // Only a backlog beyond the cap is dropped: a frame that is due exactly the cap keeps the
   // fraction of a step not due yet, or a machine that keeps up would lose real time.

@@ -2,6 +2,9 @@
 // draws the balls where they are between steps (the stepped state carried ahead by the
 // simulated time not stepped yet), so they move every frame. The physics is untouched: the same
 // steps, and while paused the view shows the stepped state exactly.
+//
+// A frame draws the balls while its first step runs: the state before the step, carried over
+// the step's time too. What the frame itself drew (no repaint after it) moves as smoothly.
 
 #include <QSlider>
 #include <vector>
@@ -74,6 +77,45 @@ TEST_F(SmoothMotion, PausedShowsTheSteppedStateExactly) {
   QTest::keyClick(view(), Qt::Key_Period);
   ASSERT_EQ(group().steps(), steps + 1);
   EXPECT_EQ(drawnAfterFrame(), mainRun().positions()[0]);
+}
+
+TEST_F(SmoothMotion, WhatEachFrameDrawsWhileItsStepRunsMovesEveryFrameInSlowMotion) {
+  openCrossingBall();
+  QTest::keyClick(window->sidebar()->timeScaleSlider()->slider(), Qt::Key_Home);
+  view()->repaint();
+  Vec2 previous = view()->drawnPositions(0)[0];
+  const double perFrame = kVelocity.x * 0.05 * kFrame;
+  // 41 frames hold two steps: in their frames the drawing happens with the step out, from the
+  // state before it; were that state not carried over the step's time, the ball would jump
+  // back a step's flight (2.5 mm · 20) there.
+  for (int frame = 1; frame <= 41; ++frame) {
+    window->advanceFrame(kFrame);
+    QCoreApplication::processEvents();  // the paint a frame without a step asks for
+    const Vec2 drawn = view()->drawnPositions(0)[0];
+    EXPECT_NEAR(drawn.x - previous.x, perFrame, 1e-9) << "frame " << frame;
+    previous = drawn;
+  }
+  ASSERT_EQ(group().steps(), 2u);
+}
+
+TEST_F(SmoothMotion, AFrameDrawsTheStateBeforeItsStepCarriedOverTheStepsTime) {
+  // Two balls that collide head-on within the next step: what the frame draws is their flight
+  // from the state before the step, not the state after the collision.
+  Scene scene = fooball::testing::emptyBox();
+  scene.balls = {ball({7.68, 4.5}, {2.0, 0.0}, 0.3), ball({8.32, 4.5}, {-2.0, 0.0}, 0.3)};
+  open(scene);
+  const std::vector<Vec2> before(mainRun().positions().begin(), mainRun().positions().end());
+  window->advanceFrame(kFrame);
+  ASSERT_EQ(group().steps(), 1u);
+  // Carried over the step (dt) and the time left over after it.
+  const double ahead = group().dt() + group().pendingTime();
+  const Vec2 drawnRight = view()->drawnPositions(0)[1];
+  EXPECT_NEAR(view()->drawnPositions(0)[0].x, before[0].x + 2.0 * ahead, 1e-12);
+  EXPECT_NEAR(drawnRight.x, before[1].x - 2.0 * ahead, 1e-12);
+  EXPECT_GT(mainRun().velocities()[1].x, 0.0) << "the step itself did collide them";
+  // The next frame draws the collided state: the right ball is on its way back.
+  window->advanceFrame(kFrame);
+  EXPECT_GT(view()->drawnPositions(0)[1].x, drawnRight.x);
 }
 
 TEST_F(SmoothMotion, AtFullSpeedTheBallMovesOneStepPerFrame) {

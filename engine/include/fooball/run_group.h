@@ -184,10 +184,12 @@ class RunGroup {
   bool paused() const { return paused_; }
   void setPaused(bool paused);
   /// The whole steps `elapsedSeconds`·`timeScale` of real time holds now (none while paused),
-  /// at most kMaxStepsPerFramePerTimeScale·timeScale (at least 1): a machine that cannot keep
-  /// up drops the backlog and slows the simulation down instead of spiralling. The caller runs
-  /// them (step() or beginSteps()).
-  int takeDueSteps(double elapsedSeconds, double timeScale);
+  /// at most kMaxStepsPerFramePerTimeScale·timeScale, and at most as many as kSteppingPerFrame
+  /// of wall-clock time holds at `secondsPerStep` each (the driver's measure of a step's cost;
+  /// 0: unknown); at least 1. A machine that cannot keep up drops the backlog and slows the
+  /// simulation down instead of spiralling, and one step a frame then: more would make the
+  /// frames rarer, not the simulation faster. The caller runs them (step() or beginSteps()).
+  int takeDueSteps(double elapsedSeconds, double timeScale, double secondsPerStep = 0.0);
   /// Forgets time not yet stepped, e.g. after a slow step.
   void dropBacklog() { accumulator_ = 0.0; }
   /// s of simulated time that real time has run past the last step and that no step holds yet:
@@ -197,6 +199,8 @@ class RunGroup {
   /// moves every frame though a step is due only every few frames.
   double pendingTime() const { return accumulator_; }
   static constexpr double kMaxStepsPerFramePerTimeScale = 4.0;
+  /// s of wall-clock stepping one frame may hold: a frame at 60 frames/s.
+  static constexpr double kSteppingPerFrame = 1.0 / 60.0;
 
   // --- Rewind ---------------------------------------------------------------------------------
   /// Keeps moments to rewind to within `bytes` (RunHistory), starting from now; 0 keeps none,
