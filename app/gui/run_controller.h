@@ -156,7 +156,7 @@ class RunController : public QObject {
   std::vector<StepTiming> timing_;
   std::chrono::milliseconds stepPatience_ = kDefaultStepPatience;
   int stepsOut_ = 0;  ///< steps of advance() whose time drawAhead() adds: only while drawing
-  double lastStepSeconds_ = 0.0;
+  double lastStepSeconds_ = 0.0;  ///< s, see lastStepSeconds()
 };
 
 }  // namespace fooball::gui
