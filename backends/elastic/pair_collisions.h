@@ -55,9 +55,25 @@ class NeighbourSlots {
 /// - exchanges the elastic impulse J = 2μ·u_n (μ the reduced mass, u_n the closing speed) only
 ///   when the pair is approaching, so a pair that is already separating is not collided again;
 /// - coincident centres get a deterministic normal instead of a division by zero.
-/// `neighbours` is the calling worker's scratch. Returns the number of impulses exchanged.
+/// How collideRows tests a ball against its (up to) eight candidates at a time. Both give the
+/// same results bit for bit: the same IEEE operations in the same order per lane, and no fused
+/// multiply-add (AVX2 does not include FMA).
+enum class LaneTest {
+  Scalar,  ///< one lane after another, on any x86-64
+  Avx2,    ///< four lanes per instruction (pair_collisions_avx2.cpp)
+};
+
+/// The fastest lane test this CPU runs: Avx2 where it has AVX2.
+LaneTest fastestLaneTest();
+
+/// `neighbours` is the calling worker's scratch; `laneTest` must run on this CPU. Returns the
+/// number of impulses exchanged.
 std::uint64_t collideRows(std::span<Ball> balls, const CellLists& cells, int firstRow, int endRow,
-                          NeighbourSlots& neighbours);
+                          NeighbourSlots& neighbours, LaneTest laneTest = fastestLaneTest());
+
+/// collideRows with LaneTest::Avx2, compiled for AVX2: call it only on a CPU that has it.
+std::uint64_t collideRowsAvx2(std::span<Ball> balls, const CellLists& cells, int firstRow,
+                              int endRow, NeighbourSlots& neighbours);
 
 /// An oversized ball's extent along x (m) when collideOversized begins, for its sweep.
 struct SweepEntry {
