@@ -16,6 +16,7 @@
 
 #include "balls.h"
 #include "cell_lists.h"
+#include "neighbour_slots.h"
 #include "pair_collisions.h"
 
 #pragma GCC push_options
@@ -30,8 +31,7 @@ namespace {
 /// Bit j set when `a` overlaps the ball in slot slots[j], j < kLanes, four lanes per
 /// instruction: per lane the same operations as the scalar test — dx = b.x − a.x, dx·dx + dy·dy,
 /// reach = a.radius + b.radius, !(d² ≥ reach²), which counts a NaN as an overlap — so the bits
-/// are the same.
-/// A lambda, so that each use is inlined into the pair search.
+/// are the same. A lambda, so that each use is inlined into the pair search.
 const auto avx2OverlapMask = [](const Probe& a, std::span<const Ball> balls,
                                 const std::uint32_t* slots) {
   static_assert(kLanes % 4 == 0);

@@ -1,4 +1,4 @@
-// The pair search of collideRows, written once for any lane test (pair_collisions.h): each
+// The pair search of collideRows (pair_collisions.h), written once for any lane test: each
 // translation unit that includes this gets its own copy (internal linkage), so
 // pair_collisions_avx2.cpp can compile it for AVX2 while pair_collisions.cpp keeps the baseline
 // instruction set. Include it only from those two files.
@@ -12,7 +12,7 @@
 
 #include "balls.h"
 #include "cell_lists.h"
-#include "pair_collisions.h"
+#include "neighbour_slots.h"
 
 namespace fooball::elastic {
 namespace {  // one copy per instruction set, see above
