@@ -10,11 +10,21 @@ namespace fooball::gui {
 // The sums have a border of one pixel all round, so a ball on the image's edge adds to its four
 // pixels without a test each; what falls on the border is off the image and never shown.
 
+int DensitySplat::rowsPerBand(int width) {
+  const std::size_t rowBytes = (std::size_t(std::max(width, 0)) + 2) * sizeof(PixelSum);
+  return int(std::max<std::size_t>(1, kBandBytes / rowBytes));
+}
+
 void DensitySplat::begin(QSize size) {
   if (size.width() == width_ && size.height() == height_) return;
   width_ = size.width();
   height_ = size.height();
   sums_.assign(std::size_t(width_ + 2) * std::size_t(height_ + 2), PixelSum{});
+  const int rows = rowsPerBand(width_);
+  sumsPerBand_ = std::size_t(rows) * std::size_t(width_ + 2);
+  bands_.resize(std::size_t((height_ + 2 + rows - 1) / rows));
+  for (auto& band : bands_)
+    band.clear();
   added_ = false;
 }
 
@@ -33,30 +43,41 @@ std::optional<DensitySplat::Spot> DensitySplat::spotOf(QPointF centre) const {
 void DensitySplat::add(QPointF centre, double radius, QRgb colour) {
   const std::optional<Spot> spot = spotOf(centre);
   if (!spot) return;
-  const auto coverage = float(std::numbers::pi * radius * radius);
-  const float red = coverage * float(qRed(colour));
-  const float green = coverage * float(qGreen(colour));
-  const float blue = coverage * float(qBlue(colour));
+  bands_[spot->index / sumsPerBand_].push_back({std::uint32_t(spot->index), spot->right, spot->down,
+                                                float(std::numbers::pi * radius * radius), colour});
+  added_ = true;
+}
+
+void DensitySplat::addToSums(const FiledBall& ball) {
+  const float coverage = ball.coverage;
+  const float red = coverage * float(qRed(ball.colour));
+  const float green = coverage * float(qGreen(ball.colour));
+  const float blue = coverage * float(qBlue(ball.colour));
   const auto addTo = [&](PixelSum& sum, float weight) {
     sum.coverage += weight * coverage;
     sum.red += weight * red;
     sum.green += weight * green;
     sum.blue += weight * blue;
   };
-  PixelSum* pixel = &sums_[spot->index];
+  PixelSum* pixel = &sums_[ball.index];
   const std::size_t stride = std::size_t(width_) + 2;
-  const float right = spot->right;
-  const float down = spot->down;
+  const float right = ball.right;
+  const float down = ball.down;
   addTo(pixel[0], (1.0F - right) * (1.0F - down));
   addTo(pixel[1], right * (1.0F - down));
   addTo(pixel[stride], (1.0F - right) * down);
   addTo(pixel[stride + 1], right * down);
-  added_ = true;
 }
 
 void DensitySplat::composeOnto(QImage& image) {
   if (!added_) return;
   added_ = false;
+  // A band's balls touch its rows and the first row of the next band: two bands' sums at most.
+  for (auto& band : bands_) {
+    for (const FiledBall& ball : band)
+      addToSums(ball);
+    band.clear();
+  }
   const std::size_t stride = std::size_t(width_) + 2;
   const auto channel = [](int shown, float keep, float added) {
     return std::min(255, int(float(shown) * keep + added + 0.5F));  // rounded: all ≥ 0

@@ -4,6 +4,7 @@
 #include <QPointF>
 #include <QRgb>
 #include <QSize>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -16,9 +17,13 @@ namespace fooball::gui {
 /// fuller one shows the mean colour of its balls.
 ///
 /// Over a few pixels this is the discs' exact coverage and colour (the test compares them block
-/// by block), so a pixel's brightness reads as the area its balls cover. The cost is a few adds
-/// per ball, bound by memory: the balls land on random pixels. At 1,000,000 balls drawing takes
-/// 31 ms a frame against 41 ms with disc masks (docs/performance.md).
+/// by block), so a pixel's brightness reads as the area its balls cover.
+///
+/// The balls come in scene order and land on random pixels, 16 bytes of sums each: a box of
+/// millions of pixels would make every add a cache miss, and one that the solver's threads,
+/// streaming their own balls beside it, make slower still. So add() only files each ball under
+/// the band of rows it lands in, and composeOnto() adds band after band, each band's sums small
+/// enough to stay in the core's cache (docs/performance.md).
 class DensitySplat {
  public:
   /// Balls of a smaller radius (px) are splatted: their disc is narrower than a pixel.
@@ -29,9 +34,15 @@ class DensitySplat {
   /// One ball, centre in image pixels as in DiscRasterizer (pixel (i, j) covers
   /// [i, i+1] × [j, j+1]); balls outside the image, or not finite, add nothing.
   void add(QPointF centre, double radius, QRgb colour);
-  /// Lays the sums over `image` (of the size begun with, opaque 32-bit RGB32 or
-  /// ARGB32_Premultiplied) and clears them for the next frame.
+  /// Lays the balls added since begin() over `image` (of the size begun with, opaque 32-bit
+  /// RGB32 or ARGB32_Premultiplied) and clears them for the next frame.
   void composeOnto(QImage& image);
+
+  /// Rows of pixels per band, for an image `width` pixels wide: as many as keep a band's sums
+  /// within kBandBytes, at least one.
+  static int rowsPerBand(int width);
+  /// Bytes of sums per band: well within the smallest L2 the app meets (512 KiB).
+  static constexpr std::size_t kBandBytes = 256 * 1024;
 
  private:
   /// What the balls splatted onto one pixel add up to: coverage in pixels, colour channels as
@@ -53,9 +64,23 @@ class DensitySplat {
   /// The spot of a ball at `centre`; none off the image.
   std::optional<Spot> spotOf(QPointF centre) const;
 
+  /// A ball as add() files it, until composeOnto() adds it to the sums.
+  struct FiledBall {
+    std::uint32_t index;  ///< Spot::index
+    float right;          ///< Spot::right
+    float down;           ///< Spot::down
+    float coverage;       ///< pixels, πr²
+    QRgb colour;
+  };
+  void addToSums(const FiledBall& ball);
+
   /// Row by row, (width_ + 2) × (height_ + 2): the image's pixels with a border of one all round
   /// (density_splat.cpp); all zero between frames.
   std::vector<PixelSum> sums_;
+  /// The balls added since begin(), by band of rows of the sums (their top-left pixel's row);
+  /// in each, in the order added. Kept between frames, so a frame allocates nothing.
+  std::vector<std::vector<FiledBall>> bands_;
+  std::size_t sumsPerBand_ = 1;  ///< pixels of the sums per band (its rows × their width)
   int width_ = 0;
   int height_ = 0;
   bool added_ = false;  ///< any ball since begin(): composeOnto() has work

@@ -109,6 +109,38 @@ TEST(DensitySplat, BallsOffTheImageOrNotFiniteAddNothingAndEveryFrameStartsClear
   EXPECT_EQ(redArea(image, 0, 0, 8), 0.0);
 }
 
+TEST(DensitySplat, BallsOnEveryRowOfAManyBandImageShowTheirSharesWhereTheyLie) {
+  // add() files balls by band of rows and composeOnto() adds band by band: one ball a row,
+  // each with pixels below it, so every band's edge has a ball whose lower pixels lie in the
+  // next band. Each must show its bilinear shares on its own four pixels, and nothing else.
+  constexpr int kWidth = 2048;
+  constexpr int kHeight = 48;
+  ASSERT_LE(DensitySplat::rowsPerBand(kWidth), kHeight / 4) << "the image spans several bands";
+  QImage image = blackImage(kWidth, kHeight);
+  DensitySplat splat;
+  splat.begin(image.size());
+  constexpr double kRadius = 0.45;
+  for (int row = 0; row + 1 < kHeight; ++row) {
+    // A quarter of a pixel right of and below the centre of (40·row + 10, row).
+    splat.add({40.0 * row + 10.75, row + 0.75}, kRadius, kWhite);
+  }
+  splat.composeOnto(image);
+  const double coverage = discArea(kRadius);
+  for (int row = 0; row + 1 < kHeight; ++row) {
+    const int left = 40 * row + 10;
+    EXPECT_EQ(qRed(image.pixel(left, row)), std::lround(255 * 0.5625 * coverage)) << row;
+    EXPECT_EQ(qRed(image.pixel(left + 1, row)), std::lround(255 * 0.1875 * coverage)) << row;
+    EXPECT_EQ(qRed(image.pixel(left, row + 1)), std::lround(255 * 0.1875 * coverage)) << row;
+    EXPECT_EQ(qRed(image.pixel(left + 1, row + 1)), std::lround(255 * 0.0625 * coverage)) << row;
+  }
+  double area = 0.0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x)
+      area += qRed(image.pixel(x, y)) / 255.0;
+  }
+  EXPECT_NEAR(area, (kHeight - 1) * coverage, (kHeight - 1) * 4 * 0.5 / 255) << "no more, no less";
+}
+
 /// Adds the disc's exact coverage of each pixel, sampled on a 16 × 16 grid per pixel, to
 /// `coverage` (side × side pixels, row by row).
 void addSampledDisc(std::vector<double>& coverage, int side, QPointF centre, double radius) {
