@@ -3,6 +3,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QLocale>
+#include <cmath>
 
 #include "charts/chart_panel.h"
 #include "number_format.h"
@@ -22,11 +23,14 @@ QLabel* rightAligned(const QString& text, const QString& toolTip) {
 }
 
 /// An overlap as a percentage of the smaller radius: "0", "<0.01 %" (rounding-level contacts),
-/// "0.31 %", "12 %".
+/// "0.31 %", "12 %", "133 %". Whole percents from 10 % up: two significant digits would write
+/// an overlap deeper than the radius, which a method beyond its limits reaches, as "1.3e+02".
 QString overlapText(double fraction) {
   if (!(fraction > 0.0)) return QStringLiteral("0");
   if (fraction < 1e-4) return QStringLiteral("<0.01 %");
-  return QLocale().toString(100.0 * fraction, 'g', 2) + QStringLiteral(" %");
+  const double percent = 100.0 * fraction;
+  if (percent < 9.95) return QLocale().toString(percent, 'g', 2) + QStringLiteral(" %");
+  return QLocale().toString(std::round(percent), 'f', 0) + QStringLiteral(" %");
 }
 
 }  // namespace

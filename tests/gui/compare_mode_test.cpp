@@ -301,6 +301,25 @@ TEST_F(CompareMode, TheCountersShowEachRunsOwnCollisionsBouncesOverlapAndEscapes
   }
 }
 
+TEST_F(CompareMode, TheCountersShowAnOverlapDeeperThanTheRadiusInWholePercents) {
+  // Two balls of radius 0.1 m, centres 0.4 m apart, close at 20 m/s. Box2D finds no contact at the
+  // step's start and does not sweep ball pairs, so one 1/60 s Box2D step leaves their centres
+  // 0.4 − 20/60 = 0.067 m apart: an overlap of 133 % of the radius, as beyond its limits.
+  Scene scene = fooball::testing::emptyBox();
+  scene.balls = {fooball::testing::ball({7.8, 4.5}, {10.0, 0.0}, 0.1),
+                 fooball::testing::ball({8.2, 4.5}, {-10.0, 0.0}, 0.1)};
+  open(scene, "box2d:substeps=1");
+  frames(1);
+  window->showReadouts();
+  const double overlap = runs().run(0).metrics().maxOverlap;
+  // Box2D works in single precision: its positions round at ~1e-6 m.
+  ASSERT_NEAR(overlap, (0.2 - (0.4 - 20.0 / 60.0)) / 0.1, 1e-4) << "the balls passed inwards";
+  const QRegularExpressionMatch shown = QRegularExpression(QStringLiteral("overlap ([0-9,]+) %,"))
+                                            .match(window->sidebar()->counters()->text());
+  ASSERT_TRUE(shown.hasMatch()) << window->sidebar()->counters()->text().toStdString();
+  EXPECT_EQ(shown.captured(1).remove(QLatin1Char(',')).toInt(), std::lround(100.0 * overlap));
+}
+
 TEST_F(CompareMode, OptionsReadAsWordsAndShowTinyValuesAndWholeNumbersExactly) {
   open(fooball::testing::gas(30), "exact", {"box2d"});
   BackendOptionsForm* exact = runList()->optionsForm(0);
