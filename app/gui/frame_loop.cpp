@@ -2,6 +2,7 @@
 
 #include <QTimer>
 #include <algorithm>
+#include <utility>
 
 #include "main_window.h"
 #include "run_controller.h"
@@ -36,32 +37,49 @@ FrameLoop::FrameLoop(MainWindow& window) : QObject(&window), window_(window) {
 
 void FrameLoop::advance(double elapsedSeconds) {
   RunController& runs = window_.runs();
-  // The balls are drawn while the frame's first step runs: the state before it, carried ahead
-  // over the steps' time. The window's thread would otherwise wait for the step, then draw, and
-  // the two take about as long at 100'000 balls. Drawn now, they are not drawn again below: the
-  // next frame draws the state these steps leave.
-  bool drawn = false;
+  // While the frame's first step runs, the window's thread feeds the charts, readouts and
+  // statistics that earlier frames made due and draws the balls (the state before the step,
+  // carried ahead over the steps' time): all of them read the state the last steps left, which
+  // the workers do not touch until the step is collected. Done after the step instead, the
+  // window's thread would wait for it and then work alone; at 100'000 balls the two take about
+  // as long.
+  bool overlapped = false;
   const int steps = runs.advance(elapsedSeconds, timeScale_, [&] {
+    showDueMeasurements();
     window_.view()->repaint();
-    drawn = true;
+    overlapped = true;
   });
   frameRate_.addFrame(steps);
-  if (steps > 0) {
-    if (++framesSinceSample_ >= kFramesPerSample) {
-      framesSinceSample_ = 0;
-      window_.sampleCharts();
-    }
-    if (++framesSinceReadout_ >= kFramesPerReadout) {
-      framesSinceReadout_ = 0;
-      window_.showReadouts();
-      if (runs.group().selected()) window_.showSelectedBall();
-    }
-    if (++framesSinceStatistics_ >= kFramesPerStatistics) {
-      framesSinceStatistics_ = 0;
-      window_.showStatistics();
-    }
+  if (steps > 0) countSteppedFrame();
+  if (!overlapped) {
+    // No step ran beside this frame (paused, or a slow step collected): nothing to wait for.
+    showDueMeasurements();
+    window_.view()->update();
   }
-  if (!drawn) window_.view()->update();
+}
+
+void FrameLoop::countSteppedFrame() {
+  if (++framesSinceSample_ >= kFramesPerSample) {
+    framesSinceSample_ = 0;
+    sampleDue_ = true;
+  }
+  if (++framesSinceReadout_ >= kFramesPerReadout) {
+    framesSinceReadout_ = 0;
+    readoutDue_ = true;
+  }
+  if (++framesSinceStatistics_ >= kFramesPerStatistics) {
+    framesSinceStatistics_ = 0;
+    statisticsDue_ = true;
+  }
+}
+
+void FrameLoop::showDueMeasurements() {
+  if (std::exchange(sampleDue_, false)) window_.sampleCharts();
+  if (std::exchange(readoutDue_, false)) {
+    window_.showReadouts();
+    if (window_.runs().group().selected()) window_.showSelectedBall();
+  }
+  if (std::exchange(statisticsDue_, false)) window_.showStatistics();
 }
 
 void FrameLoop::start() {

@@ -12,24 +12,28 @@ namespace fooball::gui {
 class MainWindow;
 
 /// The window's frames: a ~60 Hz timer that turns elapsed real time (times the speed slider)
-/// into physics steps, draws the balls while the first of them runs, feeds the charts every few
-/// frames and the readouts and statistics a few times a second. --frames drives advance()
-/// itself.
+/// into physics steps; while the first of them runs, it draws the balls and feeds the charts
+/// (every few frames) and the readouts and statistics (a few times a second) from the state
+/// before it. --frames drives advance() itself.
 class FrameLoop : public QObject {
   Q_OBJECT
 
  public:
   explicit FrameLoop(MainWindow& window);
 
-  /// One frame: the steps `elapsedSeconds` of real time hold, with the balls drawn (the state
-  /// before them) while the first runs, or after the frame when it steps none; samples,
-  /// readouts.
+  /// One frame: the steps `elapsedSeconds` of real time hold, with the balls drawn and the
+  /// samples, readouts and statistics that earlier frames made due shown (all from the state
+  /// before the steps) while the first runs, or after the frame when it steps none. A frame's
+  /// own steps make them due for the next frame.
   void advance(double elapsedSeconds);
   void start();
   /// After a pause: the time paused is not caught up.
   void restartClock() { clock_.restart(); }
-  /// The next sample comes kFramesPerSample frames from now.
-  void restartSampling() { framesSinceSample_ = 0; }
+  /// The next sample comes kFramesPerSample frames from now (the charts have just been fed).
+  void restartSampling() {
+    framesSinceSample_ = 0;
+    sampleDue_ = false;
+  }
 
   /// Simulated seconds per real second (the speed slider).
   double timeScale() const { return timeScale_; }
@@ -39,6 +43,11 @@ class FrameLoop : public QObject {
   const FrameRate& frameRate() const { return frameRate_; }
 
  private:
+  /// Counts a frame that took steps; every few, the charts, readouts or statistics fall due.
+  void countSteppedFrame();
+  /// Feeds what countSteppedFrame made due from the runs' current state.
+  void showDueMeasurements();
+
   MainWindow& window_;
   QTimer* timer_;
   QElapsedTimer clock_;
@@ -47,6 +56,9 @@ class FrameLoop : public QObject {
   int framesSinceSample_ = 0;
   int framesSinceReadout_ = 0;
   int framesSinceStatistics_ = 0;
+  bool sampleDue_ = false;
+  bool readoutDue_ = false;
+  bool statisticsDue_ = false;
 };
 
 }  // namespace fooball::gui

@@ -172,6 +172,11 @@ void MainWindow::connectRuns() {
     timeline_->showHistory();
     frames_->restartClock();
     view_->update();
+    // The readouts show the state paused on, not the one of their last refresh, frames before.
+    if (paused) {
+      showReadouts();
+      showSelectedBall();
+    }
   });
   connect(runs_.get(), &RunController::selectionChanged, this,
           [this](std::optional<std::size_t> index) {

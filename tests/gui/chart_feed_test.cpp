@@ -1,6 +1,9 @@
 #include <QComboBox>
+#include <QEvent>
 #include <QPushButton>
+#include <optional>
 
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "run_list_editor.h"
@@ -38,6 +41,54 @@ TEST_F(ChartFeed, PausedRunsAddNoSamples) {
   const std::size_t before = window->charts()->storedSampleCount(0);
   frames(30);
   EXPECT_EQ(window->charts()->storedSampleCount(0), before);
+}
+
+/// Calls `onPaint` when its watched widget gets a paint event.
+class PaintProbe : public QObject {
+ public:
+  explicit PaintProbe(std::function<void()> onPaint) : onPaint_(std::move(onPaint)) {}
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (event->type() == QEvent::Paint) onPaint_();
+    return QObject::eventFilter(watched, event);
+  }
+
+ private:
+  std::function<void()> onPaint_;
+};
+
+TEST_F(ChartFeed, AFramesStepsAreSampledWhileTheNextFramesStepRunsFromTheStateBeforeIt) {
+  // The window's thread does not wait for a step and then sample: the sample a frame's steps
+  // make due is taken while the next frame's step is out on its worker, beside the drawing,
+  // from the state that step started from.
+  open(fooball::testing::gas(40));
+  const std::size_t initial = window->charts()->storedSampleCount(0);
+  frames(3);  // a sample every 3 frames that step: the third makes one due
+  EXPECT_EQ(window->charts()->storedSampleCount(0), initial) << "due, not taken yet";
+  const double dueTime = group().time();
+  const double dueKinetic = group().run(0).metrics().sums.kineticEnergy;
+
+  std::optional<std::size_t> samplesWhileStepping;
+  PaintProbe probe([&] {
+    if (runs().stepping()) samplesWhileStepping = window->charts()->storedSampleCount(0);
+  });
+  view()->installEventFilter(&probe);
+  frames(1);
+  view()->removeEventFilter(&probe);
+  ASSERT_TRUE(samplesWhileStepping.has_value()) << "the view is drawn while the step runs";
+  EXPECT_EQ(*samplesWhileStepping, initial + 1)
+      << "sampled while the step ran, before the view was drawn";
+  EXPECT_GT(group().time(), dueTime);
+
+  window->charts()->refresh();
+  const QList<QPointF> kinetic = window->charts()->displayedPoints(ChartPanel::kEnergyChart, 0);
+  ASSERT_FALSE(kinetic.isEmpty());
+  EXPECT_EQ(kinetic.back().x(), dueTime);
+  const double factor =
+      titleFactor(window->charts()->displayedValueAxisTitle(ChartPanel::kEnergyChart));
+  EXPECT_NEAR(kinetic.back().y() * factor, dueKinetic, 4e-16 * dueKinetic)
+      << "the state before the step";
 }
 
 }  // namespace

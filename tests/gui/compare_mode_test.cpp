@@ -176,6 +176,13 @@ TEST_F(CompareMode, TheReadoutFollowsRestartAndSingleStepsWhilePaused) {
   EXPECT_NE(group().divergence(1).rmsPositionDifference, restarted) << "the steps moved the runs";
 }
 
+TEST_F(CompareMode, PausingShowsTheReadoutOfTheStatePausedOn) {
+  open(fooball::testing::gas(80), "elastic", {"box2d"});
+  frames(121);  // the readout refreshes every 6 frames: its last refresh is a frame old
+  window->actions().pause()->trigger();
+  expectReadoutShows(*window->compareReadout(), runs(), "paused after 121 frames");
+}
+
 /// What one run (or the baseline) was at a moment: its metrics and its divergence from run 0.
 struct RunState {
   Metrics metrics;
