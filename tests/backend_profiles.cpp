@@ -97,8 +97,8 @@ constexpr BoundaryExpectation kElasticBoundaries[] = {
     {.sweep = "packing", .maxError = kDoubleRounding},
     {.sweep = "packing",
      .variant = "64 balls r=0.1 m",
-     .lastPass = around(0.646, 0.01),
-     .firstFail = around(0.776, 0.01)},
+     .lastPass = around(0.776, 0.01),
+     .firstFail = around(0.822, 0.01)},
     {.sweep = "packing", .variant = "64 balls r=0.2 m", .passesEverywhere = true},
     // Scale, 1e-4 to 1e4: double with no absolute lengths, the same motion at every scale.
     {.sweep = "scale", .maxError = kDoubleRounding, .passesEverywhere = true},
@@ -299,14 +299,16 @@ constexpr std::array<BackendProfile, 5> kProfiles = {{
         // bounds.
         .workCap = {},
         // FINDING (reported to the coordinator): with ball collisions on, under gravity the elastic
-        // solver can gain energy, in none of the default 2'000 cases but in 7 of seeds
-        // 2'001–20'000: the most 6.0e-4 in seed 2324 (83 balls in a closed 0.56 × 0.47 m box under
-        // g = 0.64 m/s², 86 steps of 40 ms, one substep; earlier 1.8% in a longer run of 22 balls
-        // at g = 825 m/s²). A ball that a neighbour pushes into a wall is put back at contact,
-        // which lifts it against gravity; the lift is paid from its inward speed, but a ball
-        // resting in a pile has too little.
-        .energyFinding = {.seed = 2324, .relativeChange = pinnedChange(6.004e-4)},
-        .determinismHash = 3115361618156865503u,
+        // solver can gain energy, in none of the default 2'000 cases but in 12 of seeds
+        // 2'001–20'000 (FOOBALL_SOAK=20000): the most 9.8e-4 in seed 15422 (96 balls in a closed
+        // 63.8 × 15.8 m box under g = 526 m/s², 36 steps of 17.5 ms, one substep; earlier 1.8% in
+        // a longer run of 22 balls at g = 825 m/s²). A ball that a neighbour pushes into a wall is
+        // put back at contact, which lifts it against gravity; the lift is paid from its inward
+        // speed, but a ball resting in a pile has too little. With the pair search always from
+        // the lower left (before CellOrder) it was 7 seeds, the most 6.0e-4 in seed 2324 (now
+        // 2.9e-5 there).
+        .energyFinding = {.seed = 15422, .relativeChange = pinnedChange(9.846e-4)},
+        .determinismHash = 3187512781587505975u,
         .failureMap = kElasticBoundaries,
     },
     {

@@ -54,9 +54,10 @@ CellLists cellsFor(const std::vector<Ball>& balls) {
   CellLists cells;
   cells.layout(balls.size(), kWidth, kHeight, 2.0 * kMaxRadius, 1);
   for (std::size_t slot = 0; slot < balls.size(); ++slot)
-    cells.setCell(slot, cells.cellOf(balls[slot].x, balls[slot].y, balls[slot].radius));
+    cells.setCell(slot, cells.cellOf(balls[slot].x, balls[slot].y, balls[slot].radius,
+                                     CellOrder::FromLowerLeft));
   cells.countShare(0);
-  cells.sortShare(0);
+  cells.sortShare(0, CellOrder::FromLowerLeft);
   return cells;
 }
 

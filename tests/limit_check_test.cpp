@@ -37,10 +37,10 @@ bool crosses(const std::vector<CrossedLimit>& crossed, MethodLimit limit) {
                      [&](const CrossedLimit& c) { return c.limit == limit; });
 }
 
-/// The default preset under 100 m/s² with air resistance: the balls settle into a pile.
+/// The default preset under 300 m/s² with air resistance: the balls settle into a pile.
 Scene heavyDefaultScene() {
   Scene scene = loadPreset(kDefaultPreset);
-  scene.world.gravity = {0.0, -100.0};
+  scene.world.gravity = {0.0, -300.0};
   scene.world.airResistance = 0.5;
   return scene;
 }
@@ -67,9 +67,9 @@ TEST(LimitCheck, StrongGravityOnElasticCrossesTheRestingPileLimit) {
   Simulation run = simulationOf(heavyDefaultScene(), "elastic");
   run.run(5.0);
   const LimitNumbers numbers = measureLimitNumbers(run);
-  // The smallest ball of the default scene is 0.2 m: g·h²/r = 100 / 240² / 0.2 = 8.7e-3, beyond
-  // elastic's first measured failure, 31.6 m/s² on 0.1 m balls (5.5e-3).
-  EXPECT_NEAR(numbers.pileSinkPerSolverStep, 100.0 / (240.0 * 240.0) / 0.2, 2e-4);
+  // The smallest ball of the default scene is 0.2 m: g·h²/r = 300 / 240² / 0.2 = 0.026, beyond
+  // elastic's first measured failure, 100 m/s² on 0.1 m balls (0.017).
+  EXPECT_NEAR(numbers.pileSinkPerSolverStep, 300.0 / (240.0 * 240.0) / 0.2, 6e-4);
   const auto crossed = crossedOn(run, "elastic");
   ASSERT_TRUE(crosses(crossed, MethodLimit::RestingPile)) << methodLimitNotice(crossed);
   EXPECT_EQ(limitName(MethodLimit::RestingPile), "resting pile");

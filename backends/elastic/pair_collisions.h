@@ -21,8 +21,9 @@ enum class LaneTest {
 LaneTest fastestLaneTest();
 
 /// Resolves every overlapping pair with its lower ball in rows [firstRow, endRow) of `cells`
-/// (built on the balls' current centres), cell by cell in row-major order, each ball against
-/// the later balls of its cell, the cell to its right and the three cells above (Gauss–Seidel,
+/// (built on the balls' current centres; rows, columns, "right" and "above" count from the
+/// corner their CellOrder starts at), cell by cell in row-major order, each ball against the
+/// later balls of its cell, the cell to its right and the three cells above (Gauss–Seidel,
 /// deterministic). Touches the balls of rows firstRow … endRow only, so row bands two apart can
 /// run at the same time. For each overlapping pair:
 /// - separates it along the line of centres, each ball moved in inverse proportion to its mass
@@ -39,7 +40,7 @@ std::uint64_t collideRows(std::span<Ball> balls, const CellLists& cells, int fir
 std::uint64_t collideRowsAvx2(std::span<Ball> balls, const CellLists& cells, int firstRow,
                               int endRow, NeighbourSlots& neighbours);
 
-/// An oversized ball's extent along x (m) when collideOversized begins, for its sweep.
+/// An oversized ball's extent (m) along the sweep's axis when collideOversized begins.
 struct SweepEntry {
   double left;
   double right;
@@ -47,12 +48,13 @@ struct SweepEntry {
 };
 
 /// Resolves every overlapping pair with an oversized ball of `cells` (built on the balls'
-/// current centres), as collideRows does: the oversized balls in order of their left edges,
-/// each against the grid's balls in the cells its reach covers, then against the later
-/// oversized balls that it meets along x (a sweep, so a few hundred big balls cost no
-/// quadratic pass). Touches any ball: run it while no other worker touches balls.
-/// `sweep` is scratch with one entry per oversized ball. Returns the impulses exchanged.
-std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells,
+/// current centres, numbered in `order`), as collideRows does: the oversized balls in order
+/// along x (from the left, or from the right when `order` starts at the upper right), each
+/// against the grid's balls in the cells its reach covers, then against the later oversized
+/// balls that it meets along x (a sweep, so a few hundred big balls cost no quadratic pass).
+/// Touches any ball: run it while no other worker touches balls. `sweep` is scratch with one
+/// entry per oversized ball. Returns the impulses exchanged.
+std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells, CellOrder order,
                                std::span<SweepEntry> sweep);
 
 }  // namespace fooball::elastic

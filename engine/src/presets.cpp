@@ -37,8 +37,8 @@ constexpr Preset kPresets[] = {
      preset_data::k_cradle},
     {"billiards", "a fast cue ball breaks a rack of 15 touching balls",
      "The cue ball at 12 m/s breaks a rack of 15 touching balls. A few balls barely move at "
-     "first, but within 15 s all sixteen are on their way, and the total energy stays exactly "
-     "what the cue ball brought.",
+     "first, but within 20 s every one of the sixteen has been hit and set moving, and the total "
+     "energy stays exactly what the cue ball brought.",
      preset_data::k_billiards},
     {"mass-ratio", "a 100:1 pair against a wall: 31 collisions, the first digits of pi",
      "The heavy ball (100 times the mass) drives the light one against the wall, where it "
