@@ -41,10 +41,11 @@ class NeighbourSlots {
   /// Room for the usual neighbourhood: two fixed-size copies and the lanes past their end.
   /// Inside the object, so a worker's scratch lies on its own cache lines (WorkerState).
   std::array<std::uint32_t, 2 * CellLists::kReadPastEnd + kLanes> usual_{};
-  /// Slots crowded_ holds from the start (1 KiB a worker), so that a step allocates only for a
-  /// neighbourhood more crowded than this, which takes balls piled deep into each other: which
-  /// cells crowd most depends on the trajectory, and a first crowd may come at any step.
-  static constexpr std::size_t kCrowdedRoom = 256;
+  /// Slots crowded_ holds from the start (256 bytes a worker, under 0.3 bytes a ball at 1'000
+  /// balls), so that a step allocates only for a neighbourhood of more than 56 balls, which
+  /// takes balls piled deep into each other: which cells crowd most depends on the trajectory,
+  /// and a first crowd may come at any step (big balls among 3'000 small ones crowd up to 23).
+  static constexpr std::size_t kCrowdedRoom = 64;
   std::vector<std::uint32_t> crowded_;          ///< for a neighbourhood too big for usual_: rare
   const std::uint32_t* slots_ = usual_.data();  ///< usual_ or crowded_, set by gather
   std::size_t size_ = 0;
