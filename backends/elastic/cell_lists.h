@@ -49,13 +49,11 @@ class CellLists {
   std::uint32_t cellAt(double x, double y, CellOrder order) const {
     const double fx = x * inverseCellSize_;
     const double fy = y * inverseCellSize_;
-    int column = fx > 0.0 ? (fx < columns_ ? static_cast<int>(fx) : columns_ - 1) : 0;
-    int row = fy > 0.0 ? (fy < rows_ ? static_cast<int>(fy) : rows_ - 1) : 0;
-    if (order == CellOrder::FromUpperRight) {
-      column = columns_ - 1 - column;
-      row = rows_ - 1 - row;
-    }
-    return static_cast<std::uint32_t>(row * columns_ + column);
+    const int column = fx > 0.0 ? (fx < columns_ ? static_cast<int>(fx) : columns_ - 1) : 0;
+    const int row = fy > 0.0 ? (fy < rows_ ? static_cast<int>(fy) : rows_ - 1) : 0;
+    const auto cell = static_cast<std::uint32_t>(row * columns_ + column);
+    // Both row and column counted from the other end is the grid's cells counted backwards.
+    return order == CellOrder::FromLowerLeft ? cell : oversizedCell() - 1 - cell;
   }
   /// The cell of a ball centred at (x, y) with radius `radius` (m), numbered in `order`: the
   /// extra cell after the grid's if it is oversized.
