@@ -253,7 +253,11 @@ constexpr BoundaryExpectation kChipmunkBoundaries[] = {
     pileGivesWayBetween(10.0, 100.0),
 };
 
-constexpr std::array<BackendProfile, 5> kProfiles = {{
+constexpr BoundaryExpectation kBulletBoundaries[] = {
+    {.sweep = "tunnelling"},
+};
+
+constexpr std::array<BackendProfile, 6> kProfiles = {{
     {
         .name = "elastic",
         // Double precision with exact collision rules: the derived double-rounding defaults
@@ -570,6 +574,39 @@ constexpr std::array<BackendProfile, 5> kProfiles = {{
         .energyFinding = {},
         .determinismHash = 4657059805787966518u,
         .failureMap = kChipmunkBoundaries,
+    },
+    {
+        .name = "bullet",
+        // Bullet stores float (btScalar in Debian's default build) and, at its defaults, turns
+        // shallow overlaps into real velocity (backends/bullet/split_impulse.h): its gas gains
+        // energy, so the energy bounds are its measured changes, not rounding. Momentum 10× what
+        // it measures (5.1e-7 of Σ m|v|: float rounding of ~900 collisions, as Box2D's). Energy
+        // without gravity +176% in 5 s, under gravity +97%: both pinned, the first either way
+        // within 20% (the field has one bound), the second with pinnedChange. Velocity 10× the
+        // wall bounce's error, the largest (2.3e-5 of 3 m/s: the ball meets the wall 5.7e-6 m deep
+        // at float rounding of 15.5 m, and the Baumgarte bias turns that into speed; the kicks and
+        // setWorld's gravity are good to 3.6e-7). Position 10× the flight through a wall that is
+        // off (5.3e-5 m after 120 float steps at 16–20 m, ulp 1.9e-6).
+        .conformance = {.momentum = kClosedFormMargin * 5.14e-7,
+                        .energy = 1.2 * 1.760,
+                        .energyUnderGravity = pinnedChange(0.9708),
+                        .velocity = kClosedFormMargin * 2.29e-5,
+                        .position = kClosedFormMargin * 5.34e-5},
+        .methodError =
+            {
+                .timeStepped = true,
+                .contactLag = 2.0,
+                .wallLag = 2.0,
+                .eulerFlight = true,
+                .positionRoundingPerStep = 0x1p-21,
+                .velocityRoundingPerStep = std::numeric_limits<float>::epsilon(),
+            },
+        .gasEnergyDrift = 0.0,
+        .robustness = {},
+        .workCap = {},
+        .energyFinding = {},
+        .determinismHash = 0,
+        .failureMap = kBulletBoundaries,
     },
 }};
 

@@ -33,6 +33,7 @@ struct BallSetup {
 /// - restitution 1 and friction 0 of every kind (elastic_material.h);
 /// - never deactivated (DISABLE_DEACTIVATION): a sleeping ball would ignore drag and tools, and
 ///   Bullet puts bodies slower than 0.8 m/s to sleep after 2 s by default.
+/// Continuous collision stays off, Bullet's default (wall_containment.h says why).
 BallBody createBall(const BallDef& ball, const BallSetup& setup);
 
 /// Gives the ball radius `radius` (m) and mass `mass` (kg), keeping its body in the world;

@@ -22,6 +22,7 @@ void BulletAdapter::load(const Scene& scene) {
   contacts_ = {};
   dragLoss_ = 0.0;
   bulletSteps_ = 0;
+  ballsBroughtBack_ = 0;
 }
 
 void BulletAdapter::build(std::span<const BallDef> balls) {
@@ -119,6 +120,7 @@ std::vector<Diagnostic> BulletAdapter::diagnostics() const {
   return {
       {"bullet_steps", static_cast<double>(bulletSteps_)},
       {"worlds_built", static_cast<double>(worldsBuilt_)},
+      {"balls_brought_back", static_cast<double>(ballsBroughtBack_)},
   };
 }
 

@@ -21,7 +21,8 @@ namespace fooball::bullet_detail {
 /// and velocities are rounded to float on the way in and widened on the way out; the scene's
 /// masses are kept beside it in double. Bullet's traps are handled or exposed where they bite:
 /// restitution product, friction and restitution threshold in elastic_material.h, the plane,
-/// rotation and sleeping in ball_bodies.h, damping in linear_damping.h, the pools that would
+/// rotation and sleeping in ball_bodies.h, balls a step carries past a wall in
+/// wall_containment.h, damping in linear_damping.h, the pools that would
 /// allocate per step in bullet_world.h, the process-wide contact callback in contact_counter.h,
 /// and the three solver knobs that change the energy at restitution 1 in split_impulse.h,
 /// contact_processing.h and warm_starting.h.
@@ -64,9 +65,10 @@ class BulletAdapter final : public Backend {
   WorldSettings worldSettings_;
   float linearDamping_ = 0.0f;  ///< Bullet's d on every ball (linear_damping.h)
 
-  double dragLoss_ = 0.0;          ///< J
-  std::uint64_t bulletSteps_ = 0;  ///< stepSimulation calls since load()
-  std::uint64_t worldsBuilt_ = 0;  ///< worlds built since load(), the load's included
+  double dragLoss_ = 0.0;               ///< J
+  std::uint64_t bulletSteps_ = 0;       ///< stepSimulation calls since load()
+  std::uint64_t worldsBuilt_ = 0;       ///< worlds built since load(), the load's included
+  std::uint64_t ballsBroughtBack_ = 0;  ///< by WallContainment since load()
 };
 
 }  // namespace fooball::bullet_detail

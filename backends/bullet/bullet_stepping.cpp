@@ -1,9 +1,11 @@
 // The step loop of BulletAdapter: impulses, then per Bullet step the drag accounting, one
-// stepSimulation of exactly dt/substeps seconds, and the walls' impulse.
+// stepSimulation of exactly dt/substeps seconds, the walls' impulse and the wall containment
+// (wall_containment.h).
 
 #include "bullet_adapter.h"
 #include "linear_damping.h"
 #include "plane_vectors.h"
+#include "wall_containment.h"
 
 namespace fooball::bullet_detail {
 
@@ -11,6 +13,9 @@ void BulletAdapter::step(double dt, std::span<const Vec2> forces) {
   if (!forces.empty()) applyImpulses(dt, forces);
   const auto bulletStep = static_cast<float>(dt / settings_.substeps);  // s
   btDiscreteDynamicsWorld& world = world_->get();
+  const Walls& on = worldSettings_.walls;
+  const bool anyWall = on.left || on.right || on.bottom || on.top;
+  WallContainment walls(box_, on, fromBullet(world.getGravity()));
   int stepsTaken = 0;
   while (stepsTaken < settings_.substeps && !stopRequested()) {
     if (worldSettings_.airResistance > 0.0) dragLoss_ += dragLossOfStep(bulletStep);
@@ -20,9 +25,16 @@ void BulletAdapter::step(double dt, std::span<const Vec2> forces) {
     // bodies here are read directly, at the end of a whole step.
     world.stepSimulation(bulletStep, 0);
     addWallImpulse(*world.getDispatcher(), contacts_);
+    if (anyWall) {
+      for (std::size_t i = 0; i < balls_.size(); ++i)
+        walls.contain(*balls_[i].body, masses_[i]);
+    }
     ++stepsTaken;
   }
   bulletSteps_ += static_cast<std::uint64_t>(stepsTaken);
+  ballsBroughtBack_ += walls.ballsBroughtBack();
+  contacts_.wallCollisions += walls.wallCollisions();
+  contacts_.wallImpulse += walls.impulse();
 }
 
 void BulletAdapter::applyImpulses(double dt, std::span<const Vec2> forces) {

@@ -34,7 +34,9 @@ class BulletWorld {
 };
 
 /// Ball–ball pairs a ball may hold at once (bounding boxes overlapping, fattened by the broad
-/// phase) before the pools overflow: measured in bullet_world.cpp.
+/// phase) before the pools overflow. Measured: the standard gas of 2'000 balls steps without a
+/// single allocation in Bullet with 4 (tests/bullet_backend_test.cpp; 22'530 allocations in 60
+/// steps with the default pools). A manifold is 880 bytes, so 10'000 balls hold 70 MB of them.
 inline constexpr std::size_t kBallPairsPerBall = 4;
 
 }  // namespace fooball::bullet_detail
