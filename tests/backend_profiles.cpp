@@ -601,7 +601,16 @@ constexpr std::array<BackendProfile, 6> kProfiles = {{
                 .positionRoundingPerStep = 0x1p-21,
                 .velocityRoundingPerStep = std::numeric_limits<float>::epsilon(),
             },
-        .gasEnergyDrift = 0.0,
+        // At its defaults the thermalised gas below gains a factor 2'500 in 45 s (the Baumgarte
+        // push of every shallow overlap, backends/bullet/split_impulse.h) and the head-on and wall
+        // hits come out faster or early: nothing to agree on. With issue #37's fix, the three knobs
+        // at 0, it is a sequential-impulse method like Box2D.
+        .consistencyOptions =
+            "split_impulse_penetration_threshold=0,contact_processing_threshold=0,warm_starting=0",
+        // With those, measured over this scene: +3.9e-3 at the end, +1.4e-3 on average (a gain: the
+        // float state and the split impulse's push, which moves positions without paying for it);
+        // three times the larger.
+        .gasEnergyDrift = kGasDriftMargin * 3.92e-3,
         .robustness = {},
         .workCap = {},
         .energyFinding = {},
