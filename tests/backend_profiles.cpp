@@ -651,8 +651,9 @@ constexpr std::array<BackendProfile, 6> kProfiles = {{
         // 3.1e-5 m beyond it; the slack is that. Energy, twice the worst of the default cases
         // (kRandomCaseMargin), both ways, at Bullet's defaults: without gravity it gains up to 40%
         // (seed 1485: the Baumgarte push of shallow overlaps, backends/bullet/split_impulse.h)
-        // and loses up to 42% (seed 1881: balls stopped short of walls by contacts solved before
-        // they touch, contact_processing.h); under gravity with ball collisions off −83% … +8.8%
+        // and loses up to 42% (seed 1881; a contact solved before it touches can stop a ball dead,
+        // contact_processing.h, but the case draws every option, so its cause is not singled
+        // out); under gravity with ball collisions off −83% … +8.8%
         // (seeds 417, 962), with them on −99% … +149% (seeds 1764, 104), in an open box −10 times
         // the energy at the start (seed 268: semi-implicit Euler's fall) … +165% (seed 11). Below
         // −1 a loss bound bounds nothing; conformance pins its change under gravity instead.
