@@ -4,6 +4,7 @@
 #include <string>
 
 #include "box2d/box2d_backend.h"
+#include "bullet/bullet_backend.h"
 #include "chipmunk/chipmunk_backend.h"
 #include "elastic/elastic_backend.h"
 #include "exact/exact_backend.h"
@@ -24,6 +25,7 @@ constexpr BackendInfo kBackends[] = {
      &makeXpbdBackend, kXpbdLimits},
     {"chipmunk", "Chipmunk2D 7.0.3, elasticity 1, configured for frictionless balls",
      &makeChipmunkBackend, kChipmunkLimits},
+    {"bullet", kBulletDescription, &makeBulletBackend, kBulletLimits},
 };
 
 }  // namespace

@@ -9,9 +9,9 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "compare how physics methods treat bouncin
 # The extended description, below the summary line (CPack indents it and marks the empty line).
 set(CPACK_PACKAGE_DESCRIPTION
     "FooBall runs one box of balls on interchangeable physics methods (a time-stepped
-elastic solver, Box2D and Chipmunk2D with restitution 1, small-steps XPBD and an
-exact event-driven solver) in lockstep, side by side, and charts what each does to
-momentum and energy.
+elastic solver, Box2D, Chipmunk2D and Bullet with restitution 1, small-steps XPBD
+and an exact event-driven solver) in lockstep, side by side, and charts what each
+does to momentum and energy.
 
 This package holds the desktop app, fooball, and the headless simulator,
 fooball-cli.")

@@ -75,6 +75,11 @@ struct BackendProfile {
   ConformanceTolerances conformance;  ///< tests/conformance_test.cpp
   /// tests/consistency/short_time_test.cpp; methodError() fills in the solver step.
   MethodError methodError;
+  /// tests/consistency: the options the backend runs with there, a run spec's KEY=VALUE list
+  /// ("": its defaults). An engine set up as its users set it up (DESIGN.md) whose defaults do not
+  /// keep a gas's energy has nothing there to agree on with the others; it is compared with the
+  /// knob that fixes it, and every other suite runs its defaults.
+  std::string_view consistencyOptions;
   /// tests/consistency/gas_statistics_test.cpp: relative kinetic-energy drift, either way, over
   /// the long run of a thermalised gas (at its end and on average over its snapshots).
   double gasEnergyDrift = 0.0;

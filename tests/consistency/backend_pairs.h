@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "backend_profiles.h"
+#include "fooball/run_spec.h"
 #include "registry.h"
 
 namespace fooball::testing {
@@ -25,6 +28,15 @@ inline std::vector<BackendPair> everyBackendPair() {
       pairs.push_back({backends[i], backends[j]});
   }
   return pairs;
+}
+
+/// A new `info` backend with the options its row in tests/backend_profiles.cpp gives this suite
+/// (BackendProfile::consistencyOptions).
+inline std::unique_ptr<Backend> createForConsistency(const BackendInfo& info) {
+  const std::string_view options = profileFor(info.name).consistencyOptions;
+  RunSpec spec{std::string(info.name), {}};
+  if (!options.empty()) spec = parseRunSpec(std::string(info.name).append(":").append(options));
+  return createBackend(spec);
 }
 
 /// "elastic_vs_box2d".

@@ -78,7 +78,7 @@ void run(Backend& backend, double seconds) {
 }
 
 GasRun runGas(const BackendInfo& info, const Scene& scene, const Sampling& sampling) {
-  auto backend = info.create();
+  auto backend = testing::createForConsistency(info);
   backend->load(scene);
   const double mass = scene.balls.front().mass;
   const double balls = static_cast<double>(scene.balls.size());

@@ -23,7 +23,8 @@ echo "package: $(basename "${deb[0]}")"
 
 # Depends: the shared libraries dpkg-shlibdeps found, and the plugins and font loaded at run time.
 depends="$(dpkg-deb --field "${deb[0]}" Depends)"
-for needed in libqt6widgets6 libqt6charts6 libbox2d libchipmunk qt6-qpa-plugins fonts-dejavu-core; do
+for needed in libqt6widgets6 libqt6charts6 libbox2d libchipmunk libbullet qt6-qpa-plugins \
+  fonts-dejavu-core; do
   [[ "$depends" == *"$needed"* ]] || fail "Depends lacks $needed: $depends"
 done
 

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <btBulletDynamicsCommon.h>
+
+#include <cstdint>
+
+#include "fooball/scene.h"
+
+namespace fooball::bullet_detail {
+
+/// Brings back a ball whose centre a Bullet step left beyond a wall that is on, as an elastic wall
+/// would have: its centre mirrored in the wall's face, its velocity across the wall turned inwards.
+///
+/// Bullet finds contacts where a step starts (btDiscreteDynamicsWorld's
+/// performDiscreteCollisionDetection runs before the solve and the motion), so a ball more than
+/// its step's travel from a wall ends the step with its centre beyond the wall when it is fast
+/// (the conformance suite's fast gas: 45 m/s, 0.3 m from a wall, in its first frame). A plane is
+/// a half-space (wall_planes.h) and would push it back over the next steps, but the contract keeps
+/// every centre inside the box after every step. Bullet's own cure is continuous collision
+/// (setCcdMotionThreshold, setCcdSweptSphereRadius), off by default, and it brings more than the
+/// walls need: it sweeps every fast ball against every ball too and solves each hit as a
+/// speculative contact with restitution 0 (createPredictiveContactsInternal), and it frees and
+/// grows its array of those contacts every step (releasePredictiveContacts), so it is left at its
+/// default. The returns are counted (diagnostic `balls_brought_back`).
+///
+/// Mirroring moves the ball against gravity by twice its depth, so the speed across the wall it
+/// leaves with pays for that lift (½v'² = ½v² + g·Δp along the axis; 0 if the lift costs more
+/// than the ball has): the energy an exact wall keeps. A ball whose velocity still pointed out of
+/// the box bounced here, not in Bullet: that bounce is counted with its impulse.
+class WallContainment {
+ public:
+  /// `gravity` (m/s²) as the step flies the balls.
+  WallContainment(const Box& box, const Walls& walls, Vec2 gravity);
+
+  /// Brings `ball` (mass in kg) back if its centre is beyond a wall.
+  void contain(btRigidBody& ball, double mass) {
+    const btVector3& p = ball.getWorldTransform().getOrigin();
+    const double x = static_cast<double>(p.x());
+    const double y = static_cast<double>(p.y());
+    if (x >= lowX_ && x <= highX_ && y >= lowY_ && y <= highY_) return;
+    bringBack(ball, mass);
+  }
+
+  std::uint64_t ballsBroughtBack() const { return ballsBroughtBack_; }
+  std::uint64_t wallCollisions() const { return wallCollisions_; }  ///< unseen by Bullet
+  double impulse() const { return impulse_; }  ///< N·s, Σ|Δp| of the velocities turned back
+
+ private:
+  void bringBack(btRigidBody& ball, double mass);
+
+  double lowX_;   ///< m, the lowest centre left alone (−∞ where the wall is off)
+  double highX_;  ///< m, the highest
+  double lowY_;
+  double highY_;
+  Vec2 gravity_;  ///< m/s²
+  std::uint64_t ballsBroughtBack_ = 0;
+  std::uint64_t wallCollisions_ = 0;
+  double impulse_ = 0.0;
+};
+
+}  // namespace fooball::bullet_detail
