@@ -54,7 +54,6 @@ TEST(FooballRecording, AVideoWithoutADisplayMatchesAScreenshotAtTheSameSimulated
   const QString video = folder.filePath(QStringLiteral("run.mp4"));
   const auto recorded = runFooball(compareRun(video, 40));
   ASSERT_EQ(recorded.exitCode, 0) << recorded.err.toStdString();
-  EXPECT_TRUE(recorded.err.isEmpty()) << recorded.err.toStdString();
   EXPECT_TRUE(recorded.out.startsWith(
       QStringLiteral("fooball: recorded 40 frames (0.67 s at 60 frames/s, 640x360, libx264)")))
       << recorded.out.toStdString();
