@@ -84,12 +84,14 @@ TEST(FooballRecording, AVideoWithoutADisplayMatchesAScreenshotAtTheSameSimulated
   ASSERT_EQ(decoded.frames.size(), 2u);
   const double same = meanAbsoluteDifference(decoded.frames[0], expected);
   const double later = meanAbsoluteDifference(decoded.frames[1], expected);
-  // The same simulated time: only H.264's loss between them. On this picture (black boxes,
-  // 300 small balls with sharp edges in three tiles, white text) that is ~1.5 of 255 a channel
-  // at CRF 20 (4:2:0 halves the colour resolution of every ball's edge); 3 allows for a
-  // different x264 build. Twenty frames later every ball has moved: ~4.
+  // The same simulated time: only the codec's loss between them. On this picture (300 balls
+  // about 5 px wide in three black tiles, white text) that is 2.2 of 255 a channel at CRF 20,
+  // nearly all of it at the balls' edges, where 4:2:0 halves the colour resolution and the
+  // transform rounds sharp steps; 3 leaves room for another x264 build. Twenty frames later every
+  // ball has moved by a few of its widths: 6.1, so the frame shown at 20/60 s is the one that
+  // matches.
   EXPECT_LT(same, 3.0);
-  EXPECT_GT(later, same + 1.0) << "frame 40 differs from t = 20/60 s as much as frame 20 does";
+  EXPECT_GT(later, same + 2.0) << "frame 40 matches t = 20/60 s about as well as frame 20";
   // The WebM of the second run ends on the screenshot's picture too.
   ASSERT_EQ(webm.frames.size(), 1u);
   EXPECT_LT(meanAbsoluteDifference(webm.frames[0], expected), 3.0);
@@ -112,6 +114,15 @@ TEST(FooballRecording, AGifWithTheChartsIsTheVideoSize) {
   EXPECT_NEAR(decoded.durationSeconds, 0.4, 0.02);
 }
 
+/// The lines of stderr that fooball wrote (Qt's offscreen platform may add its own notes).
+QString fooballLines(const QString& err) {
+  QString lines;
+  for (const QString& line : err.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+    if (line.startsWith(QStringLiteral("fooball:"))) lines += line + QLatin1Char('\n');
+  }
+  return lines;
+}
+
 TEST(FooballRecording, AFileThatCannotBeWrittenIsOneLine) {
   QTemporaryDir folder;
   const QString missing = folder.filePath(QStringLiteral("no/such/folder/out.mp4"));
@@ -119,9 +130,10 @@ TEST(FooballRecording, AFileThatCannotBeWrittenIsOneLine) {
       runFooball({QStringLiteral("--record"), missing, QStringLiteral("--frames"),
                   QStringLiteral("3"), QStringLiteral("--size"), QStringLiteral("320x320")});
   EXPECT_EQ(unwritable.exitCode, 1);
-  EXPECT_EQ(unwritable.err, QStringLiteral("fooball: error: %1: could not create the file: No "
-                                           "such file or directory\n")
-                                .arg(missing));
+  EXPECT_EQ(fooballLines(unwritable.err),
+            QStringLiteral("fooball: error: %1: could not create the file: No "
+                           "such file or directory\n")
+                .arg(missing));
 
   // A disk that fills up: /dev/full refuses every write with ENOSPC.
   if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
@@ -132,11 +144,11 @@ TEST(FooballRecording, AFileThatCannotBeWrittenIsOneLine) {
                   QStringLiteral("--frames"), QStringLiteral("5"), QStringLiteral("--size"),
                   QStringLiteral("320x320")});
   EXPECT_EQ(diskFull.exitCode, 1);
-  EXPECT_EQ(diskFull.err.count(QLatin1Char('\n')), 1) << diskFull.err.toStdString();
-  EXPECT_TRUE(diskFull.err.startsWith(QStringLiteral("fooball: error: %1: ").arg(full)))
-      << diskFull.err.toStdString();
-  EXPECT_TRUE(diskFull.err.contains(QStringLiteral("(the disk is full)")))
-      << diskFull.err.toStdString();
+  const QString said = fooballLines(diskFull.err);
+  EXPECT_EQ(said.count(QLatin1Char('\n')), 1) << said.toStdString();
+  EXPECT_TRUE(said.startsWith(QStringLiteral("fooball: error: %1: ").arg(full)))
+      << said.toStdString();
+  EXPECT_TRUE(said.endsWith(QStringLiteral("(the disk is full)\n"))) << said.toStdString();
 
   const auto unknown = runFooball({QStringLiteral("--record"), QStringLiteral("out.avi"),
                                    QStringLiteral("--frames"), QStringLiteral("3")});
@@ -180,6 +192,7 @@ TEST_F(Recording, FileRecordStartsStopsAndShowsTheLengthAndSize) {
   dialog->areaChoice()->setCurrentIndex(
       dialog->areaChoice()->findData(int(RecordArea::BoxAndCharts)));
   EXPECT_TRUE(dialog->sizeChoice()->itemText(0).startsWith(QStringLiteral("As shown (")));
+  window->startLiveUpdates();  // the app's frame timer, which the recording takes over
   ASSERT_TRUE(dialog->start());
   ASSERT_NE(dialog->session(), nullptr);
   EXPECT_FALSE(dialog->pathField()->isEnabled());
@@ -211,6 +224,7 @@ TEST_F(Recording, ClosingTheWindowLeavesAPlayableFile) {
   const QString path = folder.filePath(QStringLiteral("closed.mp4"));
   dialog->pathField()->setText(path);
   dialog->sizeChoice()->setCurrentIndex(dialog->sizeChoice()->findData(QSize(640, 360)));
+  window->startLiveUpdates();
   ASSERT_TRUE(dialog->start());
   ASSERT_TRUE(testing::waitUntil([&] { return dialog->session()->frames() >= 5; }, 30.0));
   // Gone without a close event, as when the app ends: the dialog and its recording go with the

@@ -40,7 +40,8 @@ struct Contexts {
 std::vector<std::uint8_t> toRgb(Contexts& c, const AVFrame& frame) {
   c.scaler = sws_getCachedContext(c.scaler, frame.width, frame.height, AVPixelFormat(frame.format),
                                   frame.width, frame.height, AV_PIX_FMT_RGB24,
-                                  SWS_BILINEAR | SWS_ACCURATE_RND, nullptr, nullptr, nullptr);
+                                  SWS_BILINEAR | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
+                                  nullptr, nullptr);
   const int space = frame.colorspace == AVCOL_SPC_BT709 ? SWS_CS_ITU709 : SWS_CS_DEFAULT;
   const int* table = sws_getCoefficients(space);
   sws_setColorspaceDetails(c.scaler, table, frame.color_range == AVCOL_RANGE_JPEG ? 1 : 0, table, 1,

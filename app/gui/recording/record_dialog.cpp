@@ -75,7 +75,9 @@ RecordDialog::RecordDialog(MainWindow& window) : QDialog(&window), window_(windo
   buttons->addButton(startStop_, QDialogButtonBox::ActionRole);
 
   auto* form = new QFormLayout;
-  form->addRow(tr("&File:"), pathRow);
+  auto* pathLabel = new QLabel(tr("&File:"));  // a row of a layout gets no buddy by itself
+  pathLabel->setBuddy(path_);
+  form->addRow(pathLabel, pathRow);
   form->addRow(tr("&Record:"), area_);
   form->addRow(tr("&Size:"), size_);
   form->addRow(tr("Frame &rate:"), rate_);
@@ -84,6 +86,7 @@ RecordDialog::RecordDialog(MainWindow& window) : QDialog(&window), window_(windo
   layout->addWidget(note_);
   layout->addWidget(progress_);
   layout->addWidget(buttons);
+  setMinimumWidth(520);  // room for a path
 
   connect(browse, &QPushButton::clicked, this, &RecordDialog::browse);
   connect(path_, &QLineEdit::textChanged, this, &RecordDialog::offerFrameRates);

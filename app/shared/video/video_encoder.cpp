@@ -145,9 +145,12 @@ VideoEncoder::VideoEncoder(const std::string& path, const VideoSettings& setting
   f.frame->height = context.height;
   if (const int error = av_frame_get_buffer(f.frame, 0); error < 0) fail("out of memory", error);
   if (!gif) {
+    // Each chroma sample the mean of the pixels it covers (SWS_FULL_CHR_H_INP), not the colour of
+    // one of them: a ball a few pixels wide keeps its colour.
     f.scaler = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB24, settings.width,
-                              settings.height, AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND,
-                              nullptr, nullptr, nullptr);
+                              settings.height, AV_PIX_FMT_YUV420P,
+                              SWS_BILINEAR | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr,
+                              nullptr, nullptr);
     if (!f.scaler) fail("could not prepare the colour conversion", AVERROR(EINVAL));
     const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
     sws_setColorspaceDetails(f.scaler, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
