@@ -76,8 +76,8 @@ struct FormatCase {
   const char* decoder;
   /// Mean |Δ| a channel (0…255) a decoded frame may differ from what went in. H.264 and VP9
   /// keep flat colours but halve the colour resolution (4:2:0) and blur sharp edges: on these
-  /// small frames, edges everywhere a disc or the bar is, that is ~1 of 255 (measured 0.5 to
-  /// 1.1 for both, growing with the red bar); twice that is allowed. A GIF keeps every colour
+  /// small frames, edges everywhere a disc or the bar is, that is ~1 of 255 (measured 0.4 to
+  /// 1.2 for both, growing with the red bar); about twice that is allowed. A GIF keeps every colour
   /// of its first frame exactly, and shows a colour first seen later (the red bar) as the
   /// nearest of its palette's 4×4×4 cube, up to 42 of 255 a channel off on those pixels: 0.9 on
   /// the last frame.
