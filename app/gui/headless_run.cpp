@@ -3,7 +3,6 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QElapsedTimer>
-#include <QFileInfo>
 #include <QMenuBar>
 #include <QPixmap>
 #include <QStatusBar>

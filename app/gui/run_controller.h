@@ -121,7 +121,6 @@ class RunController : public QObject {
   /// For runs that must show every step, however slow (headless measurements, tests): an hour.
   static constexpr std::chrono::milliseconds kWaitForEveryStep = std::chrono::hours(1);
   void setStepPatience(std::chrono::milliseconds patience) { stepPatience_ = patience; }
-  std::chrono::milliseconds stepPatience() const { return stepPatience_; }
   /// True while a step runs in the background; the runs show the state before it.
   bool stepping() const { return group_.stepping(); }
   /// s the step still running has taken so far (the slowest run's), 0 when none.

@@ -22,11 +22,7 @@ RecordingSession::RecordingSession(MainWindow& window, const RecordingSettings& 
       settings_(settings),
       source_(window, settings.area, settings.size),
       encoder_(std::make_unique<video::VideoEncoder>(settings.path.toStdString(),
-                                                     videoSettings(settings))),
-      patience_(window.runs().stepPatience()) {
-  // Every frame shows its own steps: a step left running in the background would put the state
-  // before it in a frame meant to be later.
-  window_.runs().setStepPatience(RunController::kWaitForEveryStep);
+                                                     videoSettings(settings))) {
   clock_.start();
 }
 
@@ -67,7 +63,6 @@ QString RecordingSession::stop() {
   if (stopped_) return {};
   stopped_ = true;
   if (live_) window_.frames().setFixedFrameRate(0.0);
-  window_.runs().setStepPatience(patience_);
   try {
     encoder_->finish();
   } catch (const video::VideoError& error) {

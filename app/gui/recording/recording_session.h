@@ -4,9 +4,7 @@
 #include <QObject>
 #include <QSize>
 #include <QString>
-#include <chrono>
 #include <memory>
-#include <optional>
 
 #include "recording_frame_source.h"
 #include "video_encoder.h"
@@ -79,7 +77,6 @@ class RecordingSession : public QObject {
   QElapsedTimer clock_;
   bool live_ = false;
   bool stopped_ = false;
-  std::chrono::milliseconds patience_{0};  ///< the runs' step patience before, restored at stop
 };
 
 }  // namespace fooball::gui
