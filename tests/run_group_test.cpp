@@ -756,6 +756,28 @@ TEST(RunGroup, PendingTimeIsTheSimulatedTimeNotYetStepped) {
   EXPECT_EQ(slow.pendingTime(), 0.0);
 }
 
+TEST(RunGroup, TakeStepsForHoldsEverySimulatedSecondWithoutCapOrDrop) {
+  // A recording's frames: 25 frames/s at dt = 1/60 s is 2.4 steps a frame, so the frames take
+  // 2, 3, 2, 3, 2 steps: 12 in five frames, exactly 0.2 s, never capped (50 steps at once are
+  // 50) and never dropped however dear a step.
+  RunGroup group = groupOf(threeBalls(), {"elastic"});
+  int steps = 0;
+  for (int frame = 0; frame < 5; ++frame)
+    steps += group.takeStepsFor(1.0 / 25.0);
+  EXPECT_EQ(steps, 12);
+  EXPECT_NEAR(group.pendingTime(), 0.0, 1e-12);
+  EXPECT_EQ(group.takeStepsFor(50.0 * kDt), 50);
+  // Slow motion: a frame at 60 frames/s and 0.25× holds a quarter of a step, drawn ahead.
+  EXPECT_EQ(group.takeStepsFor(0.25 * kDt), 0);
+  EXPECT_NEAR(group.pendingTime(), 0.25 * kDt, 1e-15);
+  EXPECT_EQ(group.takeStepsFor(0.75 * kDt), 1);
+  // Paused: nothing, and nothing kept.
+  group.setPaused(true);
+  EXPECT_EQ(group.takeStepsFor(kDt), 0);
+  EXPECT_EQ(group.pendingTime(), 0.0);
+  EXPECT_EQ(group.steps(), 0u) << "the caller runs the steps, not takeStepsFor";
+}
+
 TEST(RunGroup, TakeDueStepsCapsAndDropsTheBacklog) {
   RunGroup group = groupOf(threeBalls(), {"elastic"});
   // A 10.5-step stall at time scale 1 is capped at 4 steps now; the other 6.5 are dropped.

@@ -7,6 +7,7 @@
 #include "fooball/run_group.h"
 #include "fooball/scene.h"
 #include "registry.h"
+#include "video_format.h"
 
 namespace fooball::gui {
 
@@ -65,7 +66,23 @@ long long parseCount(const QString& text, const QString& option, long long minim
   return value;
 }
 
+/// --record's file type, size and frame rate go together, and it needs --frames.
+void checkRecording(const CommandLine& line) {
+  const std::string path = line.record->toStdString();
+  const auto format = video::videoFormatOf(path);
+  if (!format) throw UsageError("--record: " + video::unknownExtensionMessage(path));
+  if (!line.frames) throw UsageError("--record: give the video's length with --frames N");
+  const QSize size = recordingSize(line);
+  const std::string problem =
+      video::checkVideoSettings({*format, size.width(), size.height(), line.recordFramesPerSecond});
+  if (!problem.empty()) throw UsageError("--record: " + problem);
+}
+
 }  // namespace
+
+QSize recordingSize(const CommandLine& line) {
+  return line.size.value_or(QSize(1280, 720));
+}
 
 QString usageText() {
   return QStringLiteral(
@@ -89,7 +106,15 @@ QString usageText() {
       "  --attractor X,Y    place a permanent attractor at (X, Y) metres (repeatable)\n"
       "  --frames N         run N frames (physics for 1/60 s + drawing each), print the mean\n"
       "                     frame time in ms and exit; works without a display\n"
-      "  --screenshot FILE  after the frames, save the window as PNG\n"
+      "  --screenshot FILE  after the frames, save the window as PNG (with --record: the\n"
+      "                     last recorded picture, before encoding)\n"
+      "  --record FILE      record the --frames frames to a video: FILE.mp4 (H.264),\n"
+      "                     FILE.webm (VP9) or FILE.gif; the box with its legend row and\n"
+      "                     run labels at --size (the video's, default 1280x720); each\n"
+      "                     frame holds 1/fps s of simulation; works without a display\n"
+      "  --fps N            the recording's frame rate: 60 (default), 50, 30, 25 or 24;\n"
+      "                     a GIF takes 50, 25, 20 or 10\n"
+      "  --record-charts    record the charts under the box too\n"
       "  --reset-settings   forget the remembered window layout, scene, backend and\n"
       "                     drawing options, and start as on first use\n"
       "  --version          print the version and exit\n"
@@ -110,11 +135,14 @@ CommandLine parseCommandLine(const QStringList& arguments) {
                                       QStringLiteral("FILE"));
   const QCommandLineOption show(QStringLiteral("show"), QString(), QStringLiteral("ITEMS"));
   const QCommandLineOption attractor(QStringLiteral("attractor"), QString(), QStringLiteral("X,Y"));
+  const QCommandLineOption record(QStringLiteral("record"), QString(), QStringLiteral("FILE"));
+  const QCommandLineOption fps(QStringLiteral("fps"), QString(), QStringLiteral("N"));
+  const QCommandLineOption recordCharts(QStringLiteral("record-charts"));
   const QCommandLineOption resetSettings(QStringLiteral("reset-settings"));
   const QCommandLineOption version(QStringLiteral("version"));
   const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")});
   parser.addOptions({scene, preset, backend, compare, size, balls, frames, screenshot, show,
-                     attractor, resetSettings, version, help});
+                     attractor, record, fps, recordCharts, resetSettings, version, help});
 
   if (!parser.parse(arguments)) throw UsageError(parser.errorText().toStdString());
   if (!parser.positionalArguments().isEmpty()) {
@@ -156,6 +184,15 @@ CommandLine parseCommandLine(const QStringList& arguments) {
   line.screenshot = single(screenshot);
   if (line.screenshot && line.screenshot->isEmpty())
     throw UsageError("--screenshot: empty file name");
+  line.record = single(record);
+  if (const auto text = single(fps)) {
+    if (!line.record) throw UsageError("--fps: only with --record");
+    line.recordFramesPerSecond =
+        static_cast<int>(parseCount(*text, QStringLiteral("fps"), 1, 1000));
+  }
+  line.recordCharts = parser.isSet(recordCharts);
+  if (line.recordCharts && !line.record) throw UsageError("--record-charts: only with --record");
+  if (line.record) checkRecording(line);
   for (const QString& items : parser.values(show)) {
     for (const QString& item : items.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
       if (!kShowItems.contains(item)) {

@@ -15,6 +15,7 @@ namespace fooball::gui {
 
 /// `fooball [--scene FILE | --preset NAME] [--backend SPEC] [--compare SPEC]… [--size WxH]
 ///          [--balls N] [--show ITEM,…] [--attractor X,Y]… [--frames N] [--screenshot FILE.png]
+///          [--record FILE.{mp4,webm,gif} [--fps N] [--record-charts]]
 ///          [--reset-settings] [--version]`
 /// (DESIGN.md, "fooball (GUI)"; --balls, --show and --attractor are extras for benchmarks and
 /// reproducible screenshots).
@@ -27,6 +28,11 @@ struct CommandLine {
   std::optional<std::size_t> balls;  ///< ball count after loading, like the spinner
   std::optional<int> frames;         ///< run this many frames, print the mean frame time, exit
   std::optional<QString> screenshot;
+  /// --record: a video of `frames` frames, each 1/fps s of video and of simulation (--size is
+  /// then the video's size, 1280x720 unless given).
+  std::optional<QString> record;
+  int recordFramesPerSecond = 60;  ///< --fps
+  bool recordCharts = false;       ///< --record-charts: the charts under the box too
   /// Drawing options to turn on: "temperature", "vectors", "centre-of-mass", "side-by-side";
   /// "statistics" opens the Statistics dock.
   QStringList show;
@@ -35,8 +41,10 @@ struct CommandLine {
   bool version = false;
   bool resetSettings = false;  ///< forget every remembered setting before starting
 
-  /// Runs without a window system of its own: --frames or --screenshot.
-  bool headless() const { return frames.has_value() || screenshot.has_value(); }
+  /// Runs without a window system of its own: --frames, --screenshot or --record.
+  bool headless() const {
+    return frames.has_value() || screenshot.has_value() || record.has_value();
+  }
 };
 
 /// A bad argument; what() is one line naming it.
@@ -50,5 +58,8 @@ class UsageError : public std::runtime_error {
 CommandLine parseCommandLine(const QStringList& arguments);
 
 QString usageText();
+
+/// px: --record's video size, --size or 1280x720.
+QSize recordingSize(const CommandLine& line);
 
 }  // namespace fooball::gui

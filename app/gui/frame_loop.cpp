@@ -2,6 +2,7 @@
 
 #include <QTimer>
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "main_window.h"
@@ -31,12 +32,36 @@ FrameLoop::FrameLoop(MainWindow& window) : QObject(&window), window_(window) {
   connect(timer_, &QTimer::timeout, this, [this] {
     const double elapsed = std::min(double(clock_.nsecsElapsed()) * 1e-9, kMaxFrameSeconds);
     clock_.restart();
-    advance(elapsed);
+    if (fixedFramesPerSecond_ > 0.0) {
+      advanceExactly(1.0 / fixedFramesPerSecond_);
+      if (frameDone_) frameDone_();
+    } else {
+      advance(elapsed);
+    }
   });
 }
 
+void FrameLoop::setFixedFrameRate(double framesPerSecond, std::function<void()> frameDone) {
+  fixedFramesPerSecond_ = framesPerSecond > 0.0 ? framesPerSecond : 0.0;
+  frameDone_ = fixedFramesPerSecond_ > 0.0 ? std::move(frameDone) : std::function<void()>();
+  timer_->setInterval(fixedFramesPerSecond_ > 0.0 ? int(std::lround(1000.0 / fixedFramesPerSecond_))
+                                                  : kFrameIntervalMs);
+  clock_.restart();
+}
+
 void FrameLoop::advance(double elapsedSeconds) {
-  RunController& runs = window_.runs();
+  advanceWith([&](const std::function<void()>& whileFirstStepRuns) {
+    return window_.runs().advance(elapsedSeconds, timeScale_, whileFirstStepRuns);
+  });
+}
+
+void FrameLoop::advanceExactly(double frameSeconds) {
+  advanceWith([&](const std::function<void()>& whileFirstStepRuns) {
+    return window_.runs().advanceExactly(frameSeconds * timeScale_, whileFirstStepRuns);
+  });
+}
+
+void FrameLoop::advanceWith(const std::function<int(const std::function<void()>&)>& stepRuns) {
   // While the frame's first step runs, the window's thread feeds the charts, readouts and
   // statistics that earlier frames made due and draws the balls (the state before the step,
   // carried ahead over the steps' time): all of them read the state the last steps left, which
@@ -44,7 +69,7 @@ void FrameLoop::advance(double elapsedSeconds) {
   // window's thread would wait for it and then work alone; at 100'000 balls the two take about
   // as long.
   bool overlapped = false;
-  const int steps = runs.advance(elapsedSeconds, timeScale_, [&] {
+  const int steps = stepRuns([&] {
     showDueMeasurements();
     window_.view()->repaint();
     overlapped = true;

@@ -2,6 +2,7 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <functional>
 
 #include "frame_rate.h"
 
@@ -26,7 +27,18 @@ class FrameLoop : public QObject {
   /// before the steps) while the first runs, or after the frame when it steps none. A frame's
   /// own steps make them due for the next frame.
   void advance(double elapsedSeconds);
+  /// One frame of a recording: exactly `frameSeconds` of real time at the speed slider, i.e.
+  /// frameSeconds·timeScale() simulated seconds, however long its steps take
+  /// (RunController::advanceExactly); otherwise as advance(). The view is left to be drawn
+  /// from the stepped state by whoever takes the frame.
+  void advanceExactly(double frameSeconds);
   void start();
+  /// While `framesPerSecond` > 0, the timer ticks at that rate and each tick is one
+  /// advanceExactly(1/framesPerSecond) followed by `frameDone` (a recording takes its frame
+  /// there); a machine too slow for the rate records slower than real time, never a frame
+  /// with more simulated time in it. 0 goes back to real time.
+  void setFixedFrameRate(double framesPerSecond, std::function<void()> frameDone = {});
+  bool fixedFrameRate() const { return fixedFramesPerSecond_ > 0.0; }
   /// After a pause: the time paused is not caught up.
   void restartClock() { clock_.restart(); }
   /// The next sample comes kFramesPerSample frames from now (the charts have just been fed).
@@ -47,12 +59,17 @@ class FrameLoop : public QObject {
   void countSteppedFrame();
   /// Feeds what countSteppedFrame made due from the runs' current state.
   void showDueMeasurements();
+  /// advance() and advanceExactly(): `stepRuns` runs the frame's steps with its argument to
+  /// call while the first runs, and returns how many.
+  void advanceWith(const std::function<int(const std::function<void()>&)>& stepRuns);
 
   MainWindow& window_;
   QTimer* timer_;
   QElapsedTimer clock_;
   FrameRate frameRate_;
   double timeScale_ = kDefaultTimeScale;
+  double fixedFramesPerSecond_ = 0.0;  ///< > 0 while recording (setFixedFrameRate)
+  std::function<void()> frameDone_;
   int framesSinceSample_ = 0;
   int framesSinceReadout_ = 0;
   int framesSinceStatistics_ = 0;

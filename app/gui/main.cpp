@@ -162,6 +162,12 @@ int main(int argc, char* argv[]) {
   QGuiApplication::setDesktopFileName(QStringLiteral("fooball"));
   try {
     MainWindow window(options);
+    if (line.record) {
+      const RecordingSettings recording{
+          *line.record, line.recordCharts ? RecordArea::BoxAndCharts : RecordArea::Box,
+          recordingSize(line), line.recordFramesPerSecond};
+      return recordHeadless(window, recording, *line.frames, line.screenshot);
+    }
     if (line.headless())
       return runHeadless(window, line.frames.value_or(1), line.screenshot, line.size);
     if (line.size) window.resize(*line.size);

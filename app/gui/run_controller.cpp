@@ -154,8 +154,16 @@ void RunController::setPaused(bool paused) {
 int RunController::advance(double elapsedSeconds, double timeScale,
                            const std::function<void()>& whileFirstStepRuns) {
   if (stepping()) return collectSteps(std::chrono::milliseconds(0)) ? 1 : 0;
-  return stepRuns(group_.takeDueSteps(elapsedSeconds, timeScale, lastStepSeconds_),
+  return stepRuns(group_.takeDueSteps(elapsedSeconds, timeScale, lastStepSeconds_), stepPatience_,
                   whileFirstStepRuns);
+}
+
+int RunController::advanceExactly(double simulatedSeconds,
+                                  const std::function<void()>& whileFirstStepRuns) {
+  // A step out in the background was due before this frame: it belongs to the time before.
+  const int collected = stepping() && collectSteps(kWaitForEveryStep) ? 1 : 0;
+  return collected +
+         stepRuns(group_.takeStepsFor(simulatedSeconds), kWaitForEveryStep, whileFirstStepRuns);
 }
 
 void RunController::rewindTo(std::size_t index) {
@@ -171,10 +179,11 @@ void RunController::stepBack() {
 }
 
 void RunController::stepOnce() {
-  if (!stepping()) stepRuns(1);
+  if (!stepping()) stepRuns(1, stepPatience_);
 }
 
-int RunController::stepRuns(int steps, const std::function<void()>& whileFirstStepRuns) {
+int RunController::stepRuns(int steps, std::chrono::milliseconds patience,
+                            const std::function<void()>& whileFirstStepRuns) {
   for (int finished = 0; finished < steps; ++finished) {
     group_.beginSteps(steps_);
     for (std::size_t i = 0; i < steps_.size(); ++i)
@@ -184,7 +193,7 @@ int RunController::stepRuns(int steps, const std::function<void()>& whileFirstSt
       whileFirstStepRuns();
       stepsOut_ = 0;
     }
-    if (!collectSteps(stepPatience_)) {
+    if (!collectSteps(patience)) {
       group_.dropBacklog();  // a slow step: no catching up after it
       return finished;
     }

@@ -95,6 +95,12 @@ class RunController : public QObject {
   /// of after them (drawAhead() carries that state over the steps' time).
   int advance(double elapsedSeconds, double timeScale,
               const std::function<void()>& whileFirstStepRuns = {});
+  /// Fixed-time driving (a recording): runs every whole step `simulatedSeconds` holds with
+  /// what earlier calls left (RunGroup::takeStepsFor), waiting for each however long it takes,
+  /// so the state after it is exactly that much later than before; a step left running in the
+  /// background by advance() is waited for first. None while paused. Returns the steps run;
+  /// `whileFirstStepRuns` as in advance().
+  int advanceExactly(double simulatedSeconds, const std::function<void()>& whileFirstStepRuns = {});
   /// One step of every run, paused or not.
   void stepOnce();
   /// Every run and the baseline back at moment `index` of the group's history (RunGroup::
@@ -142,7 +148,8 @@ class RunController : public QObject {
  private:
   /// Runs `steps` steps of every run, calling `whileFirstStepRuns` (if set) while the first is
   /// out; returns how many finished (the last may still be running).
-  int stepRuns(int steps, const std::function<void()>& whileFirstStepRuns = {});
+  int stepRuns(int steps, std::chrono::milliseconds patience,
+               const std::function<void()>& whileFirstStepRuns = {});
   /// Finishes the runs' steps if all are done within `patience`; false (nothing finished) if not.
   bool collectSteps(std::chrono::milliseconds patience);
   /// Gives up a step still running (see the class comment), so the backends are here to change.

@@ -14,6 +14,7 @@
 #include "failure_map_dialog.h"
 #include "help_dialogs.h"
 #include "main_window.h"
+#include "recording/record_dialog.h"
 #include "run_controller.h"
 #include "run_list_editor.h"
 #include "scene_commands.h"
@@ -148,6 +149,9 @@ void WindowActions::createMenus() {
                   &WindowActions::exportChartsPng);
   file->addAction(tr("Export charts as &CSV…"), QKeySequence(tr("Ctrl+Shift+E")), this,
                   &WindowActions::exportChartsCsv);
+  record_ = file->addAction(tr("&Record…"), this, &WindowActions::openRecord);
+  record_->setToolTip(
+      tr("Record the box, or the box and the charts, to MP4, WebM or an animated GIF"));
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, &window_, &QWidget::close);
 
@@ -291,6 +295,12 @@ void showTool(QDialog* dialog) {
 
 }  // namespace
 
+RecordDialog* WindowActions::openRecord() {
+  if (!recordDialog_) recordDialog_ = new RecordDialog(window_);
+  showTool(recordDialog_);
+  return recordDialog_;
+}
+
 void WindowActions::openBenchmark() {
   if (!benchmarkDialog_) {
     benchmarkDialog_ = new BenchmarkDialog(&window_);
@@ -344,6 +354,7 @@ void WindowActions::closeTools() {
        std::initializer_list<QDialog*>{benchmarkDialog_, tradeoffDialog_, failureMapDialog_}) {
     if (dialog) dialog->close();
   }
+  if (recordDialog_) recordDialog_->stop();  // the file finished before the window goes
 }
 
 void WindowActions::destroyTools() {
@@ -353,6 +364,8 @@ void WindowActions::destroyTools() {
   tradeoffDialog_ = nullptr;
   delete failureMapDialog_;
   failureMapDialog_ = nullptr;
+  delete recordDialog_;  // its recording, if any, finishes its file
+  recordDialog_ = nullptr;
 }
 
 }  // namespace fooball::gui

@@ -9,6 +9,7 @@ namespace fooball::gui {
 
 class BenchmarkDialog;
 class FailureMapDialog;
+class RecordDialog;
 class ToolDialog;
 class TradeoffDialog;
 class MainWindow;
@@ -43,6 +44,11 @@ class WindowActions : public QObject {
   /// Tools → Speed vs accuracy's dialog; none until first opened.
   TradeoffDialog* tradeoffDialog() const { return tradeoffDialog_; }
   QAction* failureMap() const { return failureMap_; }
+  /// File → Record…: its dialog; none until first opened.
+  QAction* record() const { return record_; }
+  RecordDialog* recordDialog() const { return recordDialog_; }
+  /// File → Record…: shows the dialog (made on first use).
+  RecordDialog* openRecord();
   /// Tools → Failure map's dialog; none until first opened.
   FailureMapDialog* failureMapDialog() const { return failureMapDialog_; }
 
@@ -50,7 +56,8 @@ class WindowActions : public QObject {
   /// "side-by-side") and opens the docks it names ("statistics").
   void applyShowOptions(const QStringList& show);
   void showPaused(bool paused);
-  /// Cancels the Tools' runs and closes their dialogs (the app quits with its main window).
+  /// Cancels the Tools' runs and closes their dialogs, and stops a recording (the app quits
+  /// with its main window).
   void closeTools();
   /// Deletes the Tools' dialogs, which stop and join their threads (before the window's
   /// widgets go).
@@ -100,6 +107,8 @@ class WindowActions : public QObject {
   TradeoffDialog* tradeoffDialog_ = nullptr;
   QAction* failureMap_ = nullptr;
   FailureMapDialog* failureMapDialog_ = nullptr;
+  QAction* record_ = nullptr;
+  RecordDialog* recordDialog_ = nullptr;
   int toolRuns_ = 0;             ///< Tools runs going
   bool pausedForTools_ = false;  ///< the Tools paused the runs and continue them
 };

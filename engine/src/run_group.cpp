@@ -437,6 +437,17 @@ int RunGroup::takeDueSteps(double elapsedSeconds, double timeScale, double secon
   return count;
 }
 
+int RunGroup::takeStepsFor(double simulatedSeconds) {
+  if (paused_) return 0;
+  if (simulatedSeconds > 0.0 && std::isfinite(simulatedSeconds)) accumulator_ += simulatedSeconds;
+  // A hair over the quotient: frames of 1/25 s at dt = 1/60 s sum to 2.9999999… steps after
+  // three frames where 3 are meant; a step taken 1e-9 of itself early is no error to see.
+  constexpr double kRoundingSlack = 1e-9;
+  const int count = static_cast<int>(std::floor(accumulator_ / dt() + kRoundingSlack));
+  accumulator_ = std::max(0.0, accumulator_ - count * dt());
+  return count;
+}
+
 std::span<Simulation* const> RunGroup::simulations() {
   simulations_.clear();
   forEachSimulation([&](Simulation& simulation) { simulations_.push_back(&simulation); });

@@ -102,5 +102,54 @@ TEST(CommandLine, UnknownBackendErrorListsTheKnownOnes) {
   }
 }
 
+TEST(CommandLine, ReadsARecording) {
+  const CommandLine line = parse({"--preset", "gas", "--size", "640x360", "--record", "out.GIF",
+                                  "--frames", "50", "--fps", "25", "--record-charts"});
+  EXPECT_EQ(line.record, QStringLiteral("out.GIF"));
+  EXPECT_EQ(line.recordFramesPerSecond, 25);
+  EXPECT_TRUE(line.recordCharts);
+  EXPECT_EQ(recordingSize(line), QSize(640, 360));
+  EXPECT_TRUE(line.headless());
+  // Without --size, --fps: 1280x720 at 60 frames/s.
+  const CommandLine plain = parse({"--record", "a.webm", "--frames", "3"});
+  EXPECT_EQ(recordingSize(plain), QSize(1280, 720));
+  EXPECT_EQ(plain.recordFramesPerSecond, 60);
+  EXPECT_FALSE(plain.recordCharts);
+}
+
+TEST(CommandLine, ABadRecordingIsOneLineNamingTheProblem) {
+  const struct {
+    QStringList arguments;
+    const char* message;
+  } cases[] = {
+      {{"--record", "out.avi", "--frames", "10"},
+       "--record: out.avi: unknown video type '.avi' (use .mp4, .webm or .gif)"},
+      {{"--record", "out.mp4"}, "--record: give the video's length with --frames N"},
+      {{"--record", "out.mp4", "--frames", "10", "--size", "641x360"},
+       "--record: video size 641x360: MP4 (H.264) needs an even width and height"},
+      {{"--record", "out.gif", "--frames", "10"},
+       "--record: 60 frames/s: animated GIF plays 50, 25, 20, 10 (its frame delay is in "
+       "hundredths of a second)"},
+      {{"--fps", "30", "--frames", "10"}, "--fps: only with --record"},
+      {{"--record-charts", "--frames", "10"}, "--record-charts: only with --record"},
+      {{"--record", "a.mp4", "--frames", "10", "--fps", "0"},
+       "--fps: expected a whole number from 1 to 1000 (got '0')"},
+  };
+  for (const auto& c : cases) {
+    try {
+      parse(c.arguments);
+      ADD_FAILURE() << "accepted: " << c.arguments.join(' ').toStdString();
+    } catch (const UsageError& error) {
+      EXPECT_EQ(std::string(error.what()), c.message);
+    }
+  }
+}
+
+TEST(CommandLine, HelpNamesTheRecordingOptions) {
+  const QString help = usageText();
+  for (const char* option : {"--record FILE", "--fps N", "--record-charts"})
+    EXPECT_TRUE(help.contains(QLatin1String(option))) << option;
+}
+
 }  // namespace
 }  // namespace fooball::gui

@@ -1,41 +1,18 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
-#include <QProcess>
-#include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "fooball/version.h"
+#include "fooball_process.h"
 
 namespace {
 
-struct Outcome {
-  int exitCode = -1;
-  QString out;
-  QString err;
-};
-
-using Variables = std::vector<std::pair<QString, QString>>;
-const Variables kOffscreen = {{QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen")}};
-
-/// Runs the built fooball binary with no display at all, as CI does, and `variables` set.
-Outcome runFooball(const QStringList& arguments, const Variables& variables) {
-  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-  environment.remove(QStringLiteral("DISPLAY"));
-  environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
-  environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
-  for (const auto& [name, value] : variables)
-    environment.insert(name, value);
-  QProcess process;
-  process.setProcessEnvironment(environment);
-  process.start(QStringLiteral(FOOBALL_GUI_PATH), arguments);
-  EXPECT_TRUE(process.waitForFinished(60'000));
-  return {process.exitCode(), QString::fromLocal8Bit(process.readAllStandardOutput()),
-          QString::fromLocal8Bit(process.readAllStandardError())};
-}
+using fooball::gui::testing::kOffscreen;
+using fooball::gui::testing::Outcome;
+using fooball::gui::testing::runFooball;
+using fooball::gui::testing::Variables;
 
 TEST(FooballBinary, ScreenshotWritesANonEmptyImageWithoutADisplay) {
   QTemporaryDir directory;

@@ -23,8 +23,8 @@ echo "package: $(basename "${deb[0]}")"
 
 # Depends: the shared libraries dpkg-shlibdeps found, and the plugins and font loaded at run time.
 depends="$(dpkg-deb --field "${deb[0]}" Depends)"
-for needed in libqt6widgets6 libqt6charts6 libbox2d libchipmunk libbullet qt6-qpa-plugins \
-  fonts-dejavu-core; do
+for needed in libqt6widgets6 libqt6charts6 libbox2d libchipmunk libbullet libavcodec libavformat \
+  libswscale qt6-qpa-plugins fonts-dejavu-core; do
   [[ "$depends" == *"$needed"* ]] || fail "Depends lacks $needed: $depends"
 done
 
@@ -73,9 +73,15 @@ frames="$(QT_QPA_PLATFORM=offscreen "$root/usr/bin/fooball" --frames 10 2>&1)" |
   fail "fooball --frames 10 exited $?: $frames"
 [[ "$frames" == *"mean frame time"* ]] || fail "fooball --frames 10 printed: $frames"
 
+# A recording, as installed: FFmpeg's libraries and their GIF encoder found at run time.
+recorded="$(QT_QPA_PLATFORM=offscreen "$root/usr/bin/fooball" --record "$work/run.gif" --fps 25 \
+  --frames 5 --size 320x320 2>&1)" || fail "fooball --record exited $?: $recorded"
+[ "$(head -c 6 "$work/run.gif" 2>/dev/null)" = "GIF89a" ] || fail "fooball --record wrote no GIF"
+
 # The man pages hold the programs' own help: an option of each, and every subcommand of the CLI.
 zcat "$share/man/man1/fooball.1.gz" | grep -q -- 'reset\\-settings' ||
   fail "fooball.1 lacks --reset-settings"
+zcat "$share/man/man1/fooball.1.gz" | grep -q -- '\\-\\-record' || fail "fooball.1 lacks --record"
 for subcommand in list run compare capacity tradeoff failure-map; do
   zcat "$share/man/man1/fooball-cli.1.gz" | grep -q "^\.SS \"fooball\\\\-cli $subcommand\"" ||
     zcat "$share/man/man1/fooball-cli.1.gz" | grep -q "^\.SS \"fooball-cli $subcommand\"" ||

@@ -190,6 +190,11 @@ class RunGroup {
   /// simulation down instead of spiralling, and one step a frame then: more would make the
   /// frames rarer, not the simulation faster. The caller runs them (step() or beginSteps()).
   int takeDueSteps(double elapsedSeconds, double timeScale, double secondsPerStep = 0.0);
+  /// Fixed-time driving (a recording's frames): the whole steps `simulatedSeconds` holds with
+  /// what earlier calls left over, however many and however dear (no cap, no backlog dropped),
+  /// so that every frame shows the same simulated time after the last; none while paused. The
+  /// fraction of a step left stays pending (pendingTime), as in takeDueSteps.
+  int takeStepsFor(double simulatedSeconds);
   /// Forgets time not yet stepped, e.g. after a slow step.
   void dropBacklog() { accumulator_ = 0.0; }
   /// s of simulated time that real time has run past the last step and that no step holds yet:

@@ -1,0 +1,64 @@
+#include "recording_frame_source.h"
+
+#include <QDockWidget>
+#include <QPainter>
+#include <algorithm>
+
+#include "charts/chart_panel.h"
+#include "main_window.h"
+#include "simulation_view.h"
+
+namespace fooball::gui {
+
+namespace {
+
+bool chartsShown(const MainWindow& window, RecordArea area) {
+  return area == RecordArea::BoxAndCharts && window.chartsDock()->isVisible() &&
+         window.charts()->isVisible();
+}
+
+}  // namespace
+
+RecordingFrameSource::RecordingFrameSource(MainWindow& window, RecordArea area, QSize videoSize)
+    : window_(window),
+      area_(area),
+      canvas_(videoSize, QImage::Format_RGB32),
+      image_(videoSize, QImage::Format_RGB888) {}
+
+QSize RecordingFrameSource::shownSize(const MainWindow& window, RecordArea area) {
+  QSize size = window.view()->size();
+  if (chartsShown(window, area)) {
+    const QSize charts = window.charts()->size();
+    size = {std::max(size.width(), charts.width()), size.height() + charts.height()};
+  }
+  return size;
+}
+
+const QImage& RecordingFrameSource::grab() {
+  const QSize shown = shownSize(window_, area_);
+  canvas_.fill(Qt::black);
+  if (!shown.isEmpty()) {
+    QPainter painter(&canvas_);
+    painter.setRenderHints(QPainter::Antialiasing | QPainter::SmoothPixmapTransform |
+                           QPainter::TextAntialiasing);
+    const double scale = std::min(double(canvas_.width()) / shown.width(),
+                                  double(canvas_.height()) / shown.height());
+    painter.translate((canvas_.width() - scale * shown.width()) / 2.0,
+                      (canvas_.height() - scale * shown.height()) / 2.0);
+    painter.scale(scale, scale);
+    SimulationView* view = window_.view();
+    view->render(&painter);
+    if (chartsShown(window_, area_)) {
+      // Redrawn for every frame rather than by the panel's 10-per-second timer, so a recording
+      // shows the charts as of its own frames, however fast the machine.
+      window_.charts()->refresh();
+      painter.translate(0, view->height());
+      window_.charts()->render(&painter, QPoint(), QRegion(),
+                               QWidget::DrawWindowBackground | QWidget::DrawChildren);
+    }
+  }
+  image_ = canvas_.convertToFormat(QImage::Format_RGB888);
+  return image_;
+}
+
+}  // namespace fooball::gui
