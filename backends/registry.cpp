@@ -7,6 +7,7 @@
 #include "chipmunk/chipmunk_backend.h"
 #include "elastic/elastic_backend.h"
 #include "exact/exact_backend.h"
+#include "matter/matter_backend.h"
 #include "xpbd/xpbd_backend.h"
 
 namespace fooball {
@@ -24,12 +25,18 @@ constexpr BackendInfo kBackends[] = {
      &makeXpbdBackend, kXpbdLimits},
     {"chipmunk", "Chipmunk2D 7.0.3, elasticity 1, configured for frictionless balls",
      &makeChipmunkBackend, kChipmunkLimits},
+    {"matter", "matter.js 0.20.0 (JavaScript, in Node.js), restitution 1, as its users set it up",
+     &makeMatterBackend, kMatterLimits, &matterUnavailable},
 };
 
 }  // namespace
 
 std::span<const BackendInfo> registeredBackends() {
   return kBackends;
+}
+
+std::string unavailableReason(const BackendInfo& info) {
+  return info.unavailable != nullptr ? info.unavailable() : std::string();
 }
 
 const BackendInfo& backendInfo(std::string_view name) {
