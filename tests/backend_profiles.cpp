@@ -253,7 +253,7 @@ constexpr BoundaryExpectation kChipmunkBoundaries[] = {
     pileGivesWayBetween(10.0, 100.0),
 };
 
-constexpr std::array<BackendProfile, 5> kProfiles = {{
+constexpr std::array<BackendProfile, 6> kProfiles = {{
     {
         .name = "elastic",
         // Double precision with exact collision rules: the derived double-rounding defaults
@@ -571,12 +571,75 @@ constexpr std::array<BackendProfile, 5> kProfiles = {{
         .determinismHash = 4657059805787966518u,
         .failureMap = kChipmunkBoundaries,
     },
+    {
+        .name = "matter",
+        // matter.js as its users set it up (backends/js/adapters/matter.js), double state in
+        // pixels (64 px/m) and pixels per 1/60 s frame. Its velocity is a difference of two
+        // positions (Body.setVelocity: positionPrev = position − v), so a velocity set or kicked
+        // keeps only the bits a position of a few hundred pixels leaves it: 10× the worst each
+        // check measures, 1.6e-13 relative (the kick of SetBallEditsOneBall and the gravity of
+        // SetWorldChangesGravityLive). Energy: its resting threshold (Resolver._restingThresh,
+        // 2 px per frame, 1.9 m/s here) solves every slower contact as resting, without its
+        // bounce: the 300-ball gas loses 30.2% in 5 s (measured), so 20% beyond that either way;
+        // under gravity it loses 2.8%, pinned.
+        .conformance = {.energy = 1.2 * 0.302,
+                        .energyUnderGravity = pinnedChange(-0.02803),
+                        .velocity = kClosedFormMargin * 1.6e-13},
+        .methodError =
+            {
+                .timeStepped = true,
+                // It finds a contact after the step's position update, reverses u in the
+                // velocity pass and pushes the overlap out in the position pass of later steps
+                // (factor 2, as Chipmunk).
+                .contactLag = 2.0,
+                .wallLag = 2.0,
+                // Verlet on positions: v += g·dt, then x += v·dt (Body.update).
+                .eulerFlight = true,
+            },
+        // With resting_thresh=0 (consistencyOption): measured +1.5e-13 at the end, +8.6e-14 on
+        // average (rounding of its position differences); three times the larger.
+        .gasEnergyDrift = kGasDriftMargin * 1.52e-13,
+        // Its circles are what Bodies.circle makes: polygons of max(10, min(25, r in px)) sides,
+        // 10-gons for this gas's 0.1 m balls (6.4 px), whose hits come closer than the circle's
+        // 2r: measured 3.578 collisions per ball and second against 3.773–3.810 for elastic,
+        // exact, xpbd and Box2D, −5.8% (the KS checks and Enskog's rate within 3% hold).
+        .collisionRateOffset = -0.058,
+        // The first 50 default cases (randomCases): each starts a Node.js process, 19 s together
+        // on the loaded 2-core VM (all 2'000 would take 13 minutes). Energy, twice the worst of
+        // them, both ways: the loss side bounds nothing, since resting_thresh is drawn up to
+        // 100 px per frame (47 m/s), where every contact is solved as resting and inelastic; the
+        // gain side is rounding without gravity (7.1e-11, seed 20: velocities of 1e-5 m/s kept
+        // as differences of positions of a metre) and, under gravity with collisions off, the
+        // position solver lifting balls it pushes out of the floor (2.5%, seed 4: slop 3.4 px).
+        // Overlaps: none measured beyond the checks' zero in these cases.
+        .robustness = {.energyWithoutGravity = randomCaseRange(-1.0, 7.12e-11),
+                       .energyUnderGravity = randomCaseRange(-1.0, 0.0252),
+                       .energyUnderGravityWithCollisions = randomCaseRange(-1.0, 0.0),
+                       .energyUnderGravityOpen = randomCaseRange(-10.0, 0.0),
+                       .energyAbsolute = 1e-12,
+                       .wallSlack = 0.0,
+                       .ballOverlap = 0.0,
+                       .ballOverlapWithInteractions = 0.0,
+                       .wallOverlap = 0.0},
+        // Pure JavaScript in doubles: the same bits on every run (V8's Math.sin and Math.cos, which
+        // build the circles' polygons, are its own fdlibm port, the same on every machine).
+        .determinismHash = 8227773526849075201u,
+        .randomCases = 50,
+        .consistencyOption = "resting_thresh=0",
+    },
 }};
 
 }  // namespace
 
 std::span<const BackendProfile> backendProfiles() {
   return kProfiles;
+}
+
+std::unique_ptr<Backend> createForConsistency(const BackendInfo& info) {
+  std::unique_ptr<Backend> backend = info.create();
+  const std::string_view option = profileFor(info.name).consistencyOption;
+  if (!option.empty()) backend->setOptionFromText(option);
+  return backend;
 }
 
 const BackendProfile& profileFor(std::string_view name) {

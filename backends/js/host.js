@@ -16,7 +16,8 @@
 //          collisions), u32 0;  ball: f64 x, y, vx, vy, radius, mass
 //   READY    (100) u32 protocol, u32 0, string node version, string engine version
 //   STATE    (101) u32 balls, u32 0, f64 ball collisions, wall collisions, wall impulse (N·s),
-//                  drag loss (J), engine steps, then balls × (f64 x, y, vx, vy)
+//                  drag loss (J), engine steps, balls brought back into the box by the adapter,
+//                  then balls × (f64 x, y, vx, vy)
 //   ERROR    (199) string message
 // SI units, y up, as FooBall's scene; each adapter converts to its engine's.
 
@@ -117,7 +118,8 @@ const BALL_DOUBLES = 6;
 
 /// What every adapter counts, cumulative since LOAD (an OPTIONS rebuild keeps them).
 function zeroCounters() {
-  return {ballCollisions: 0, wallCollisions: 0, wallImpulse: 0, dragLoss: 0, engineSteps: 0};
+  return {ballCollisions: 0, wallCollisions: 0, wallImpulse: 0, dragLoss: 0, engineSteps: 0,
+          ballsBroughtBack: 0};
 }
 
 async function main() {
@@ -152,20 +154,21 @@ async function main() {
 
   function reply() {
     const n = scene ? scene.balls.length / BALL_DOUBLES : 0;
-    const bytes = 8 + 5 * 8 + 4 * 8 * n;
+    const bytes = 8 + 6 * 8 + 4 * 8 * n;
     output.ensure(8 + bytes);
     output.view.setUint32(8, n, true);
     output.view.setUint32(12, 0, true);
-    const numbers = output.f64s(16, 5 + 4 * n);
+    const numbers = output.f64s(16, 6 + 4 * n);
     numbers[0] = counters.ballCollisions;
     numbers[1] = counters.wallCollisions;
     numbers[2] = counters.wallImpulse;
     numbers[3] = counters.dragLoss;
     numbers[4] = counters.engineSteps;
+    numbers[5] = counters.ballsBroughtBack;
     if (n > 0) {
       if (state.length !== 4 * n) state = new Float64Array(4 * n);
       engine.readState(state);
-      numbers.set(state, 5);
+      numbers.set(state, 6);
     }
     send(KIND.STATE, bytes);
   }

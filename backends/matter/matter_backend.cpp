@@ -11,16 +11,16 @@ std::vector<OptionSpec> matterOptionSpecs() {
   return {
       {"position_iterations",
        "matter.js position-solver passes per step (Engine.positionIterations; its default)", 6.0,
-       1.0, 1000.0, true},
+       1.0, 100.0, true},
       {"velocity_iterations",
        "matter.js velocity-solver passes per step (Engine.velocityIterations; its default)", 4.0,
-       1.0, 1000.0, true, OptionRole::Iterations},
+       1.0, 100.0, true, OptionRole::Iterations},
       {"resting_thresh",
        "normal speed in px per 1/60 s frame (64 px/m) below which a contact is solved as resting, "
        "not bounced (Resolver._restingThresh; 0 makes every hit elastic)",
-       2.0, 0.0, 1000.0},
+       2.0, 0.0, 100.0},
       {"slop", "overlap in px left alone by the position solver (Body.slop; 64 px/m)", 0.05, 0.0,
-       64.0},
+       6.4},
   };
 }
 

@@ -63,8 +63,9 @@ struct HostCounters {
   double wallImpulse = 0.0;  ///< N·s
   double dragLoss = 0.0;     ///< J
   double engineSteps = 0.0;
+  double ballsBroughtBack = 0.0;  ///< into the box by the adapter, past a wall that is on
 };
-inline constexpr std::size_t kStateHeadBytes = 8 + 5 * 8;  ///< ball count, padding, counters
+inline constexpr std::size_t kStateHeadBytes = 8 + 6 * 8;  ///< ball count, padding, counters
 
 /// Reads fields in order from a received payload; any read past its end marks it garbage.
 class FrameReader {

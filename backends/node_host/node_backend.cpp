@@ -52,7 +52,8 @@ class NodeBackend final : public Backend {
 
   std::vector<Diagnostic> diagnostics() const override {
     if (!host_) return {};
-    return {{"engine_steps", host_->counters().engineSteps}};
+    return {{"engine_steps", host_->counters().engineSteps},
+            {"balls_brought_back", host_->counters().ballsBroughtBack}};
   }
 
  protected:

@@ -117,6 +117,7 @@ void NodeHost::exchangeForState() {
   counters_.wallImpulse = reader.f64();
   counters_.dragLoss = reader.f64();
   counters_.engineSteps = reader.f64();
+  counters_.ballsBroughtBack = reader.f64();
   if (!reader.ok() || reply_.size() != kStateHeadBytes + 32 * std::size_t{balls}) {
     child_.markGarbage();
     fail({});

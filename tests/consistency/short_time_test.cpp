@@ -58,7 +58,7 @@ struct BackendRun {
 };
 
 BackendRun runScene(const BackendInfo& info, const Scene& scene, double seconds) {
-  auto backend = info.create();
+  auto backend = testing::createForConsistency(info);
   const MethodError error =
       testing::methodError(testing::profileFor(info.name).methodError, *backend, kDt);
   backend->load(scene);

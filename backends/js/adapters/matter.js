@@ -11,6 +11,11 @@
 //   a contact is solved as resting, with a clamped accumulated impulse that never bounces back
 //   fully; 0 makes every hit elastic), and each body's slop 0.05 px.
 //
+// - a ball whose centre has passed a wall that is on is brought back, mirrored inside with its
+//   normal speed reversed (containBalls): matter.js has no continuous collision, and a fast ball
+//   can end a step beyond a wall's face, which the backend contract forbids (its users see the
+//   same ball pushed out later by the position solver, from inside the 1 m thick wall).
+//
 // Scale: 64 pixels per metre, y down, matter's clock in milliseconds. matter.js is tuned in
 // pixels (slop 0.05 px, resting threshold 2 px per 1/60 s frame, circles of 10 to 25 sides for
 // radii of 10 to 25 px, Engine._deltaMax one frame): its examples run bodies of 10–80 px in
@@ -114,6 +119,27 @@ function create() {
     }
   }
 
+  /// Brings back every ball whose centre is beyond a wall that is on (see the top); returns how
+  /// many. Each is a wall bounce the contact events may not have seen.
+  function containBalls() {
+    const width = box.width * PIXELS_PER_METRE;
+    const height = box.height * PIXELS_PER_METRE;  // y runs from 0 down to −height
+    let brought = 0;
+    for (const body of balls) {
+      let {x, y} = body.position;
+      let {x: vx, y: vy} = body.velocity;
+      if (world.walls.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
+      if (world.walls.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
+      if (world.walls.top && y < -height) [y, vy] = [-2 * height - y, Math.abs(vy)];
+      if (world.walls.bottom && y > 0) [y, vy] = [-y, -Math.abs(vy)];
+      if (x === body.position.x && y === body.position.y) continue;
+      Body.setPosition(body, {x, y});
+      Body.setVelocity(body, {x: vx, y: vy});
+      ++brought;
+    }
+    return brought;
+  }
+
   function readVelocities() {
     for (let i = 0; i < balls.length; ++i) {
       velocities[2 * i] = balls[i].velocity.x / velocityScale;
@@ -191,6 +217,7 @@ function create() {
       wallImpulse.remember(velocities);
       Engine.update(engine, dt * 1000);
       counters.engineSteps += 1;
+      counters.ballsBroughtBack += containBalls();
       for (const pair of engine.pairs.list) {
         if (!pair.isActive) continue;
         const a = pair.bodyA.fooballIndex;
