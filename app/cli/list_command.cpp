@@ -32,6 +32,8 @@ void printBackends(std::ostream& out) {
     heading.append(nameWidth - info.name.size() + 2, ' ');
     table.addLine("");
     table.addLine(heading + std::string(info.description));
+    if (const std::string reason = unavailableReason(info); !reason.empty())
+      table.addLine("      unavailable here: " + reason);
     const auto backend = info.create();
     const auto specs = backend->options().specs();
     if (specs.empty()) table.addLine("      (no options)");

@@ -17,7 +17,7 @@
 //   READY    (100) u32 protocol, u32 0, string node version, string engine version
 //   STATE    (101) u32 balls, u32 0, f64 ball collisions, wall collisions, wall impulse (N·s),
 //                  drag loss (J), engine steps, balls brought back into the box by the adapter,
-//                  then balls × (f64 x, y, vx, vy)
+//                  s spent in the adapter's step, then balls × (f64 x, y, vx, vy)
 //   ERROR    (199) string message
 // SI units, y up, as FooBall's scene; each adapter converts to its engine's.
 
@@ -119,7 +119,7 @@ const BALL_DOUBLES = 6;
 /// What every adapter counts, cumulative since LOAD (an OPTIONS rebuild keeps them).
 function zeroCounters() {
   return {ballCollisions: 0, wallCollisions: 0, wallImpulse: 0, dragLoss: 0, engineSteps: 0,
-          ballsBroughtBack: 0};
+          ballsBroughtBack: 0, stepSeconds: 0};
 }
 
 async function main() {
@@ -154,21 +154,22 @@ async function main() {
 
   function reply() {
     const n = scene ? scene.balls.length / BALL_DOUBLES : 0;
-    const bytes = 8 + 6 * 8 + 4 * 8 * n;
+    const bytes = 8 + 7 * 8 + 4 * 8 * n;
     output.ensure(8 + bytes);
     output.view.setUint32(8, n, true);
     output.view.setUint32(12, 0, true);
-    const numbers = output.f64s(16, 6 + 4 * n);
+    const numbers = output.f64s(16, 7 + 4 * n);
     numbers[0] = counters.ballCollisions;
     numbers[1] = counters.wallCollisions;
     numbers[2] = counters.wallImpulse;
     numbers[3] = counters.dragLoss;
     numbers[4] = counters.engineSteps;
     numbers[5] = counters.ballsBroughtBack;
+    numbers[6] = counters.stepSeconds;
     if (n > 0) {
       if (state.length !== 4 * n) state = new Float64Array(4 * n);
       engine.readState(state);
-      numbers.set(state, 6);
+      numbers.set(state, 7);
     }
     send(KIND.STATE, bytes);
   }
@@ -235,7 +236,9 @@ async function main() {
         case KIND.STEP: {
           const dt = input.view.getFloat64(0, true);
           const forceCount = input.view.getUint32(8, true);
+          const start = process.hrtime.bigint();
           engine.step(dt, forceCount > 0 ? input.f64s(16, 2 * forceCount) : null, counters);
+          counters.stepSeconds += Number(process.hrtime.bigint() - start) * 1e-9;
           break;
         }
         default:

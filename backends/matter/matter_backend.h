@@ -15,7 +15,14 @@ std::unique_ptr<Backend> makeMatterBackend();
 /// Why matter.js cannot run here, with the fix; empty when it can.
 std::string matterUnavailable();
 
-/// Not measured on the failure map yet: no limit is stated, so the check warns of none.
-inline constexpr MethodLimits kMatterLimits{};
+/// Where matter.js at its users' settings was measured to stop being right (docs/accuracy.md, the
+/// "Where" tables; one matter step per step). Its resting threshold (2 px per frame, 1.9 m/s)
+/// makes the map's slow scenes fail from their easiest point.
+inline constexpr MethodLimits kMatterLimits{
+    .tunnelling = MeasuredBoundary{2.0, 2.83},  // v·h/r: passes up to 2, fails from 2.83
+    // g: fails from the lowest tried, 1 m/s² (energy and overlap).
+    .restingPile = MeasuredBoundary{0.0, pileSweepNumber(1.0, 1)},
+    .packing = MeasuredBoundary{0.0, 0.277},  // fails from the lowest tried (energy)
+};
 
 }  // namespace fooball

@@ -64,8 +64,9 @@ struct HostCounters {
   double dragLoss = 0.0;     ///< J
   double engineSteps = 0.0;
   double ballsBroughtBack = 0.0;  ///< into the box by the adapter, past a wall that is on
+  double stepSeconds = 0.0;       ///< s, wall-clock time inside the adapter's step (the engine's)
 };
-inline constexpr std::size_t kStateHeadBytes = 8 + 6 * 8;  ///< ball count, padding, counters
+inline constexpr std::size_t kStateHeadBytes = 8 + 7 * 8;  ///< ball count, padding, counters
 
 /// Reads fields in order from a received payload; any read past its end marks it garbage.
 class FrameReader {

@@ -1,5 +1,6 @@
 #include "node_backend.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "host_files.h"
@@ -18,6 +19,8 @@ class NodeBackend final : public Backend {
   void load(const Scene& scene) override {
     if (!host_) start();
     call([&](NodeHost& host) { host.load(scene); });
+    stepSecondsAtLoad_ = host_->stepSeconds();
+    stepsSinceLoad_ = 0.0;
   }
 
   void setWorld(const WorldSettings& world) override {
@@ -26,6 +29,7 @@ class NodeBackend final : public Backend {
 
   void step(double dt, std::span<const Vec2> forces) override {
     call([&](NodeHost& host) { host.step(dt, forces); });
+    stepsSinceLoad_ += 1.0;
   }
 
   void setBall(std::size_t index, const BallDef& ball) override {
@@ -52,8 +56,14 @@ class NodeBackend final : public Backend {
 
   std::vector<Diagnostic> diagnostics() const override {
     if (!host_) return {};
-    return {{"engine_steps", host_->counters().engineSteps},
-            {"balls_brought_back", host_->counters().ballsBroughtBack}};
+    // The host's overhead per step, in ms: each step's round trip less the engine's own step.
+    const node_host::HostCounters& c = host_->counters();
+    const double steps = std::max(1.0, stepsSinceLoad_);
+    return {{"engine_steps", c.engineSteps},
+            {"balls_brought_back", c.ballsBroughtBack},
+            {"engine_ms_per_step", 1e3 * c.stepSeconds / steps},
+            {"host_overhead_ms_per_step",
+             1e3 * (host_->stepSeconds() - stepSecondsAtLoad_ - c.stepSeconds) / steps}};
   }
 
  protected:
@@ -93,7 +103,9 @@ class NodeBackend final : public Backend {
 
   JsEngine engine_;
   std::unique_ptr<NodeHost> host_;
-  std::string failure_;  ///< the fault that ended the last host, if one did
+  std::string failure_;             ///< the fault that ended the last host, if one did
+  double stepSecondsAtLoad_ = 0.0;  ///< s, host_->stepSeconds() at the last load()
+  double stepsSinceLoad_ = 0.0;
 };
 
 }  // namespace

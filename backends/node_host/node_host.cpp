@@ -9,23 +9,27 @@ namespace fooball::node_host {
 
 namespace {
 
-/// The child's stderr tail as one line: its last lines joined by " | ", at most ~600 characters.
+/// The child's stderr tail as one line: its lines joined by " | ", without a JavaScript stack's
+/// "    at …" frames (the error's own lines say what went wrong), the last ~600 characters.
 std::string quoteTail(const std::string& tail) {
   constexpr std::size_t kQuoted = 600;
-  std::string text = tail.size() > kQuoted ? tail.substr(tail.size() - kQuoted) : tail;
-  if (tail.size() > kQuoted) {
-    const std::size_t line = text.find('\n');
-    if (line != std::string::npos) text.erase(0, line + 1);
+  std::string joined;
+  std::size_t start = 0;
+  while (start < tail.size()) {
+    std::size_t end = tail.find('\n', start);
+    if (end == std::string::npos) end = tail.size();
+    std::string_view line(tail.data() + start, end - start);
+    start = end + 1;
+    while (!line.empty() && line.back() == '\r')
+      line.remove_suffix(1);
+    const std::size_t text = line.find_first_not_of(" \t");
+    if (text == std::string_view::npos) continue;
+    if (text > 0 && line.substr(text).starts_with("at ")) continue;
+    if (!joined.empty()) joined += " | ";
+    joined += line;
   }
-  std::string quoted;
-  for (const char c : text) {
-    if (c == '\n') {
-      quoted += " | ";
-    } else if (c != '\r') {
-      quoted += c;
-    }
-  }
-  return quoted.empty() ? "its stderr is empty" : "its stderr ends: " + quoted;
+  if (joined.size() > kQuoted) joined = "…" + joined.substr(joined.size() - kQuoted);
+  return joined.empty() ? "its stderr is empty" : "its stderr ends: " + joined;
 }
 
 std::vector<std::string> hostCommand(const std::string& hostScript) {
@@ -118,6 +122,7 @@ void NodeHost::exchangeForState() {
   counters_.dragLoss = reader.f64();
   counters_.engineSteps = reader.f64();
   counters_.ballsBroughtBack = reader.f64();
+  counters_.stepSeconds = reader.f64();
   if (!reader.ok() || reply_.size() != kStateHeadBytes + 32 * std::size_t{balls}) {
     child_.markGarbage();
     fail({});
@@ -165,6 +170,7 @@ void NodeHost::setBall(std::size_t index, const BallDef& ball) {
 }
 
 void NodeHost::step(double dt, std::span<const Vec2> forces) {
+  const auto start = ChildProcess::Clock::now();
   writer_.begin(FrameKind::Step);
   writer_.f64(dt);
   writer_.u32Pair(static_cast<std::uint32_t>(forces.size()), 0);
@@ -172,6 +178,7 @@ void NodeHost::step(double dt, std::span<const Vec2> forces) {
   writer_.raw(std::as_bytes(forces));
   writer_.end();
   exchangeForState();
+  stepSeconds_ += std::chrono::duration<double>(ChildProcess::Clock::now() - start).count();
 }
 
 }  // namespace fooball::node_host

@@ -50,6 +50,10 @@ class NodeHost {
   std::span<const double> state() const { return state_; }
   std::size_t ballCount() const { return state_.size() / 4; }
   const HostCounters& counters() const { return counters_; }
+  /// s, wall-clock time of every step() since this host started: the engine's step
+  /// (counters().stepSeconds, since the last load) and the host's overhead (the frames both
+  /// ways through the pipes, the state's read-back in JavaScript and here).
+  double stepSeconds() const { return stepSeconds_; }
 
   pid_t pid() const { return child_.pid(); }
 
@@ -67,6 +71,7 @@ class NodeHost {
   std::vector<std::byte> reply_;
   std::vector<double> state_;
   HostCounters counters_;
+  double stepSeconds_ = 0.0;
   std::string nodeVersion_;
   std::string engineVersion_;
 };
