@@ -23,6 +23,7 @@
 
 const fs = require('fs');
 const path = require('path');
+const util = require('util');
 
 const PROTOCOL = 1;
 const KIND = {HELLO: 1, OPTIONS: 2, LOAD: 3, WORLD: 4, SET_BALL: 5, STEP: 6,
@@ -30,8 +31,10 @@ const KIND = {HELLO: 1, OPTIONS: 2, LOAD: 3, WORLD: 4, SET_BALL: 5, STEP: 6,
 const ENGINES = new Set(['matter', 'rapier', 'box2d3']);
 
 // Engines print (matter's warnOnce, wasm loaders): stdout is the protocol's, so everything
-// they say goes to stderr.
-console.log = console.info = console.debug = console.error;
+// they say goes to stderr, written at once (Node writes to a pipe asynchronously, and what is
+// still queued when the host is killed or exits would be lost to the C++ side's error).
+function say(...args) { fs.writeSync(2, util.format(...args) + '\n'); }
+console.log = console.info = console.debug = console.warn = console.error = say;
 
 function readFully(buffer, length) {
   let done = 0;
