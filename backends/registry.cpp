@@ -26,7 +26,7 @@ constexpr BackendInfo kBackends[] = {
     {"chipmunk", "Chipmunk2D 7.0.3, elasticity 1, configured for frictionless balls",
      &makeChipmunkBackend, kChipmunkLimits},
     {"matter", "matter.js 0.20.0 (JavaScript, in Node.js), restitution 1, as its users set it up",
-     &makeMatterBackend, kMatterLimits, &matterUnavailable},
+     &makeMatterBackend, kMatterLimits, &matterUnavailable, "JavaScript"},
 };
 
 }  // namespace

@@ -24,6 +24,9 @@ struct BackendInfo {
   /// unavailable backend is still listed and created (its options are known); its load() throws
   /// std::runtime_error with the same reason.
   std::string (*unavailable)() = nullptr;
+  /// Where the method does not run as native code, what it runs as, e.g. "JavaScript" or
+  /// "WebAssembly" (in the Node.js host): said beside its speed, so nobody reads it as native.
+  std::string_view runtime = {};
 };
 
 /// info.unavailable's answer, or empty for a backend that always runs.
