@@ -8,6 +8,7 @@
 #include "elastic/elastic_backend.h"
 #include "exact/exact_backend.h"
 #include "matter/matter_backend.h"
+#include "rapier/rapier_backend.h"
 #include "xpbd/xpbd_backend.h"
 
 namespace fooball {
@@ -27,6 +28,9 @@ constexpr BackendInfo kBackends[] = {
      &makeChipmunkBackend, kChipmunkLimits},
     {"matter", "matter.js 0.20.0 (JavaScript, in Node.js), restitution 1, as its users set it up",
      &makeMatterBackend, kMatterLimits, &matterUnavailable, "JavaScript"},
+    {"rapier",
+     "Rapier 2D 0.21.0 or 0.19.3 (WebAssembly, in Node.js), restitution 1, as its users set it up",
+     &makeRapierBackend, kRapierLimits, &rapierUnavailable, "WebAssembly"},
 };
 
 }  // namespace

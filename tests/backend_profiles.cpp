@@ -277,7 +277,7 @@ constexpr BoundaryExpectation kMatterBoundaries[] = {
     {.sweep = "pile", .failsAbove = 0.5},
 };
 
-constexpr std::array<BackendProfile, 6> kProfiles = {{
+constexpr std::array<BackendProfile, 7> kProfiles = {{
     {
         .name = "elastic",
         // Double precision with exact collision rules: the derived double-rounding defaults
@@ -651,6 +651,21 @@ constexpr std::array<BackendProfile, 6> kProfiles = {{
         .failureMap = kMatterBoundaries,
         .randomCases = 50,
         .consistencyOption = "resting_thresh=0",
+    },
+    {
+        .name = "rapier",
+        // Rapier 2D 0.21.0 (the default `version`) as its users set it up
+        // (backends/js/adapters/rapier.js): float state (f32, in WebAssembly) and soft contacts.
+        // 10× what each check measures: momentum 9.0e-9 of Σ m|v| (float impulses); velocity
+        // 6.0e-7 of the 1 m/s setWorld's gravity gives in 0.5 s (float steps); position 2.1e-4 m
+        // after 2 s of flight at 3 m/s through a wall that is off (float positions at 20 m), as
+        // Box2D. Energy: the soft contacts lose it (docs/accuracy.md): −13.4% of the 300-ball gas
+        // in 5 s, so 20% beyond that either way, and −79.5% under gravity, pinned.
+        .conformance = {.momentum = kClosedFormMargin * 9.0e-9,
+                        .energy = 1.2 * 0.134,
+                        .energyUnderGravity = pinnedChange(-0.795),
+                        .velocity = kClosedFormMargin * 6.0e-7,
+                        .position = kClosedFormMargin * 2.14e-4},
     },
 }};
 

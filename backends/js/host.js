@@ -177,6 +177,9 @@ async function main() {
     send(KIND.STATE, bytes);
   }
 
+  // An adapter may have a `prepare(options)` that loads what the options ask for (a WebAssembly
+  // module, which loads asynchronously) before a `load` that uses them.
+
   /// The scene as the engine has it now, for a rebuild with new options.
   function currentScene() {
     const balls = Float64Array.from(scene.balls);
@@ -206,6 +209,7 @@ async function main() {
             options[name] = input.view.getFloat64(at.offset, true);
             at.offset += 8;
           }
+          if (engine.prepare) await engine.prepare(options);
           if (scene) {
             scene = currentScene();
             engine.load(scene, options, counters);
