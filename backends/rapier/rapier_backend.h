@@ -15,7 +15,14 @@ std::unique_ptr<Backend> makeRapierBackend();
 /// Why Rapier cannot run here, with the fix; empty when it can.
 std::string rapierUnavailable();
 
-/// Not measured on the failure map yet: no limit is stated.
-inline constexpr MethodLimits kRapierLimits{};
+/// Where Rapier 2D 0.21.0 at its users' settings was measured to stop being right
+/// (docs/accuracy.md; one Rapier step per step, quick grid): it never tunnelled up to 16 radii
+/// per step with 0.05 m balls (predictive contacts), but 0.5 m balls from 2.38.
+inline constexpr MethodLimits kRapierLimits{
+    .tunnelling = MeasuredBoundary{2.0, 2.38},  // v·h/r: passes up to 2, fails from 2.38
+    // g: passes up to 10 m/s², fails from 100 m/s² (energy and overlap).
+    .restingPile = MeasuredBoundary{pileSweepNumber(10.0, 1), pileSweepNumber(100.0, 1)},
+    .packing = MeasuredBoundary{0.0, 0.277},  // fails from the lowest tried (energy, overlap)
+};
 
 }  // namespace fooball

@@ -14,6 +14,10 @@
 //   restitution threshold. Its soft contacts (a spring of that frequency pushing overlaps apart,
 //   and restitution applied only to the approach it sees) are what change its energy
 //   (docs/accuracy.md).
+// - a ball whose centre has passed a wall that is on is brought back, mirrored inside with its
+//   normal speed reversed (containBalls), as the matter adapter does: without continuous
+//   collision a small fast ball can end a step beyond a wall's face, which the backend contract
+//   forbids.
 // Metres, y up, as FooBall's: Rapier's lengthUnit stays 1.
 
 const fs = require('fs');
@@ -136,6 +140,28 @@ async function create() {
     }
   }
 
+  /// Brings back every ball whose centre is beyond a wall that is on; returns how many.
+  function containBalls() {
+    const {width, height} = scene;
+    const on = scene.world.walls;
+    let brought = 0;
+    for (const body of bodies) {
+      const p = body.translation();
+      let {x, y} = p;
+      const v = body.linvel();
+      let {x: vx, y: vy} = v;
+      if (on.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
+      if (on.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
+      if (on.bottom && y < 0) [y, vy] = [-y, Math.abs(vy)];
+      if (on.top && y > height) [y, vy] = [2 * height - y, -Math.abs(vy)];
+      if (x === p.x && y === p.y) continue;
+      body.setTranslation({x, y}, true);
+      body.setLinvel({x: vx, y: vy}, true);
+      ++brought;
+    }
+    return brought;
+  }
+
   function readVelocities() {
     for (let i = 0; i < bodies.length; ++i) {
       const v = bodies[i].linvel();
@@ -230,6 +256,7 @@ async function create() {
       world.timestep = dt;
       world.step(queue);
       counters.engineSteps += 1;
+      counters.ballsBroughtBack += containBalls();
       metWall.clear();
       queue.drainCollisionEvents(onCollision);
       const charge = (i) => {
