@@ -8,6 +8,8 @@
 #include "chipmunk/chipmunk_backend.h"
 #include "elastic/elastic_backend.h"
 #include "exact/exact_backend.h"
+#include "matter/matter_backend.h"
+#include "rapier/rapier_backend.h"
 #include "xpbd/xpbd_backend.h"
 
 namespace fooball {
@@ -26,12 +28,21 @@ constexpr BackendInfo kBackends[] = {
     {"chipmunk", "Chipmunk2D 7.0.3, elasticity 1, configured for frictionless balls",
      &makeChipmunkBackend, kChipmunkLimits},
     {"bullet", kBulletDescription, &makeBulletBackend, kBulletLimits},
+    {"matter", "matter.js 0.20.0 (JavaScript, in Node.js), restitution 1, as its users set it up",
+     &makeMatterBackend, kMatterLimits, &matterUnavailable, "JavaScript"},
+    {"rapier",
+     "Rapier 2D 0.21.0 or 0.19.3 (WebAssembly, in Node.js), restitution 1, as its users set it up",
+     &makeRapierBackend, kRapierLimits, &rapierUnavailable, "WebAssembly"},
 };
 
 }  // namespace
 
 std::span<const BackendInfo> registeredBackends() {
   return kBackends;
+}
+
+std::string unavailableReason(const BackendInfo& info) {
+  return info.unavailable != nullptr ? info.unavailable() : std::string();
 }
 
 const BackendInfo& backendInfo(std::string_view name) {

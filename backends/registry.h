@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "fooball/backend.h"
@@ -18,7 +19,18 @@ struct BackendInfo {
   /// Where the method was measured to stop being right (docs/accuracy.md): stated in the
   /// backend's own header, checked by crossedLimits (fooball/limit_check.h).
   MethodLimits limits;
+  /// Why it cannot run on this machine, with the fix, e.g. an engine in the Node.js host where
+  /// Node.js or its npm package is missing; empty when it can. nullptr: it always can. An
+  /// unavailable backend is still listed and created (its options are known); its load() throws
+  /// std::runtime_error with the same reason.
+  std::string (*unavailable)() = nullptr;
+  /// Where the method does not run as native code, what it runs as, e.g. "JavaScript" or
+  /// "WebAssembly" (in the Node.js host): said beside its speed, so nobody reads it as native.
+  std::string_view runtime = {};
 };
+
+/// info.unavailable's answer, or empty for a backend that always runs.
+std::string unavailableReason(const BackendInfo& info);
 
 /// Every backend, in the order users see them.
 std::span<const BackendInfo> registeredBackends();

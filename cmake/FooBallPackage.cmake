@@ -21,7 +21,8 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_STRIP_FILES ON)
 # The shared libraries come from dpkg-shlibdeps. What the programs load at run time without
 # linking to it: Qt's platform plugins (xcb for a desktop, offscreen for --frames), and a font for
-# the charts' text.
+# the charts' text; and Node.js, which runs the engines in JavaScript and WebAssembly (their npm
+# packages ship in share/fooball/js).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, fonts-dejavu-core")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, fonts-dejavu-core, nodejs (>= 18)")
 include(CPack)

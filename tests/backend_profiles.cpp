@@ -292,7 +292,58 @@ constexpr BoundaryExpectation kBulletBoundaries[] = {
     {.sweep = "pile", .failsAbove = 0.0, .errorFloor = ErrorFloor{1000.0, 2.5}},
 };
 
-constexpr std::array<BackendProfile, 6> kProfiles = {{
+// matter.js at its users' settings (resting threshold 2 px per frame, 1.9 m/s at 64 px/m): the
+// map's scenes move at 1–3 m/s, so most of its failures are that threshold's inelastic "resting"
+// contacts, measured on the quick grid (full grid for tunnelling).
+constexpr BoundaryExpectation kMatterBoundaries[] = {
+    // Between balls it bounces from 0.71 to 2 radii per step and passes through from 2.83 on (no
+    // continuous collision); at 0.5 the shot is slower than the resting threshold and stops.
+    {.sweep = "tunnelling", .variant = "ball r=0.05 m", .failsAbove = 2.01},
+    // Its 1 m thick walls hold every speed tried from 0.71 radii per step on (error ≤ 1.9e-15).
+    {.sweep = "tunnelling", .variant = "wall r=0.05 m", .passesAbove = 0.6},
+    // The map's head-on hit is slower than the resting threshold at every mass ratio: the balls
+    // meet as a resting contact and move off together (error 1 at 1:1, towards 2 beyond).
+    {.sweep = "mass-ratio", .failsAbove = 0.5},
+    // The cradle's shot is fast enough: measured ≤ 3.0e-14 at every gap, down to touching.
+    {.sweep = "cradle", .maxError = kDoubleRounding, .passesEverywhere = true},
+    // Dense packing at 1 m/s: every hit is below the threshold; it loses 38–99% of the energy.
+    {.sweep = "packing", .failsAbove = 0.2},
+    // Scale: speeds of 1–3·s m/s against a threshold fixed in pixels per frame: it fails from
+    // 1e-3 to 1 (energy −0.9% to −43%) and holds from 10 on (measured ≤ 1.8e-14).
+    {.sweep = "scale", .passesAbove = 5.0},
+    // The pile loses energy (0.099 of Σ m·g·r at g = 1, 2.8 at 1000) and sinks deeper than 0.1 r
+    // at every g tried.
+    {.sweep = "pile", .failsAbove = 0.5},
+};
+
+// Rapier 2D 0.21.0 at its users' settings, measured on the quick grid (full grid for tunnelling).
+constexpr BoundaryExpectation kRapierBoundaries[] = {
+    // Its contacts are predictive (a prediction distance ahead of the surface, an absolute
+    // length): it met every shot of the small ball, at a ball and at a wall, up to 16 radii per
+    // step (error ≤ 8e-8, float); the 0.5 m ball, whose radii the prediction covers less of,
+    // tunnels as the time-stepped methods do, from 2.38 radii per step.
+    {.sweep = "tunnelling", .variant = "ball r=0.05 m", .passesEverywhere = true},
+    {.sweep = "tunnelling", .variant = "wall r=0.05 m", .passesEverywhere = true},
+    tunnelsBetweenTwoAndFourRadii("ball r=0.5 m"),
+    // One contact solved in float: ≤ 1.9e-7 up to a million to one.
+    {.sweep = "mass-ratio", .maxError = 1e-6, .passesEverywhere = true},
+    // The cradle holds with gaps of 0.1 r and more; from 0.01 r its soft contacts share the
+    // momentum out along the row (error 1.1–1.6).
+    {.sweep = "cradle",
+     .variant = "gaps",
+     .lastPass = around(0.1, 1e-9),
+     .firstFail = around(0.01, 1e-9)},
+    // Dense packing at 1 m/s: its soft contacts lose energy (2.2% at 0.277 for r = 0.1 m, 0.9%
+    // for 0.2 m, up to all of it near jamming) and let balls sink 0.22 r: fails from the lowest.
+    {.sweep = "packing", .failsAbove = 0.2},
+    // Scale: it holds at 0.1 and 1 and fails below (−4.1%: its allowed linear error and prediction
+    // distance are absolute lengths) and above (overlap 0.17 r at 10, energy at 100 and beyond).
+    {.sweep = "scale", .failsAbove = 5.0},
+    // The pile holds to ten metres per second squared (energy 0.011 of Σ m·g·r), not 100.
+    pileGivesWayBetween(10.0, 100.0),
+};
+
+constexpr std::array<BackendProfile, 8> kProfiles = {{
     {
         .name = "elastic",
         // Double precision with exact collision rules: the derived double-rounding defaults
@@ -677,12 +728,126 @@ constexpr std::array<BackendProfile, 6> kProfiles = {{
         .determinismHash = 9457379961517678274u,
         .failureMap = kBulletBoundaries,
     },
+    {
+        .name = "matter",
+        // matter.js as its users set it up (backends/js/adapters/matter.js), double state in
+        // pixels (64 px/m) and pixels per 1/60 s frame. Its velocity is a difference of two
+        // positions (Body.setVelocity: positionPrev = position − v), so a velocity set or kicked
+        // keeps only the bits a position of a few hundred pixels leaves it: 10× the worst each
+        // check measures, 1.6e-13 relative (the kick of SetBallEditsOneBall and the gravity of
+        // SetWorldChangesGravityLive). Energy: its resting threshold (Resolver._restingThresh,
+        // 2 px per frame, 1.9 m/s here) solves every slower contact as resting, without its
+        // bounce: the 300-ball gas loses 30.2% in 5 s (measured), so 20% beyond that either way;
+        // under gravity it loses 2.8%, pinned.
+        .conformance = {.energy = 1.2 * 0.302,
+                        .energyUnderGravity = pinnedChange(-0.02803),
+                        .velocity = kClosedFormMargin * 1.6e-13},
+        .methodError =
+            {
+                .timeStepped = true,
+                // It finds a contact after the step's position update, reverses u in the
+                // velocity pass and pushes the overlap out in the position pass of later steps
+                // (factor 2, as Chipmunk).
+                .contactLag = 2.0,
+                .wallLag = 2.0,
+                // Verlet on positions: v += g·dt, then x += v·dt (Body.update).
+                .eulerFlight = true,
+            },
+        // With resting_thresh=0 (consistencyOption): measured +1.5e-13 at the end, +8.6e-14 on
+        // average (rounding of its position differences); three times the larger.
+        .gasEnergyDrift = kGasDriftMargin * 1.52e-13,
+        // Its circles are what Bodies.circle makes: polygons of max(10, min(25, r in px)) sides,
+        // 10-gons for this gas's 0.1 m balls (6.4 px), whose hits come closer than the circle's
+        // 2r: measured 3.578 collisions per ball and second against 3.773–3.810 for elastic,
+        // exact, xpbd and Box2D, −5.8% (the KS checks and Enskog's rate within 3% hold).
+        .collisionRateOffset = -0.058,
+        // The first 50 default cases (randomCases): each starts a Node.js process, 19 s together
+        // on the loaded 2-core VM (all 2'000 would take 13 minutes). Energy, twice the worst of
+        // them, both ways: the loss side bounds nothing, since resting_thresh is drawn up to
+        // 100 px per frame (47 m/s), where every contact is solved as resting and inelastic; the
+        // gain side is rounding without gravity (7.1e-11, seed 20: velocities of 1e-5 m/s kept
+        // as differences of positions of a metre) and, under gravity with collisions off, the
+        // position solver lifting balls it pushes out of the floor (2.5%, seed 4: slop 3.4 px).
+        // Overlaps: none measured beyond the checks' zero in these cases.
+        .robustness = {.energyWithoutGravity = randomCaseRange(-1.0, 7.12e-11),
+                       .energyUnderGravity = randomCaseRange(-1.0, 0.0252),
+                       .energyUnderGravityWithCollisions = randomCaseRange(-1.0, 0.0),
+                       .energyUnderGravityOpen = randomCaseRange(-10.0, 0.0),
+                       .energyAbsolute = 1e-12,
+                       .wallSlack = 0.0,
+                       .ballOverlap = 0.0,
+                       .ballOverlapWithInteractions = 0.0,
+                       .wallOverlap = 0.0},
+        // Pure JavaScript in doubles: the same bits on every run (V8's Math.sin and Math.cos, which
+        // build the circles' polygons, are its own fdlibm port, the same on every machine).
+        .determinismHash = 8227773526849075201u,
+        .failureMap = kMatterBoundaries,
+        .randomCases = 50,
+        .consistencyOption = "resting_thresh=0",
+    },
+    {
+        .name = "rapier",
+        // Rapier 2D 0.21.0 (the default `version`) as its users set it up
+        // (backends/js/adapters/rapier.js): float state (f32, in WebAssembly) and soft contacts.
+        // 10× what each check measures: momentum 9.0e-9 of Σ m|v| (float impulses); velocity
+        // 6.0e-7 of the 1 m/s setWorld's gravity gives in 0.5 s (float steps); position 2.1e-4 m
+        // after 2 s of flight at 3 m/s through a wall that is off (float positions at 20 m), as
+        // Box2D. Energy: the soft contacts lose it (docs/accuracy.md): −13.4% of the 300-ball gas
+        // in 5 s, so 20% beyond that either way, and −79.5% under gravity, pinned.
+        .conformance = {.momentum = kClosedFormMargin * 9.0e-9,
+                        .energy = 1.2 * 0.134,
+                        .energyUnderGravity = pinnedChange(-0.795),
+                        .velocity = kClosedFormMargin * 6.0e-7,
+                        .position = kClosedFormMargin * 2.14e-4},
+        .methodError =
+            {
+                .timeStepped = true,
+                // Soft contacts reverse u over the step in which the overlap is found and push
+                // the overlap out over later ones (factor 2, as Box2D).
+                .contactLag = 2.0,
+                .wallLag = 2.0,
+                // Symplectic Euler (v += h·g; x += h·v).
+                .eulerFlight = true,
+                // float state: ½ ulp(8 … 16 m) = 2^−21 m, and ε = 2^−23.
+                .positionRoundingPerStep = 0x1p-21,
+                .velocityRoundingPerStep = std::numeric_limits<float>::epsilon(),
+            },
+        .gasStatisticsExemption =
+            "its soft contacts drain the gas's energy (−31% in 10 s of the 2'000-ball gas) and no "
+            "option stops it (docs/accuracy.md)",
+        // The first 20 default cases (randomCases): each starts a Node.js process and loads the
+        // WebAssembly, 81 s together on the loaded 2-core VM. Energy: the loss side bounds
+        // nothing (its soft contacts and contact_natural_frequency, drawn up to 10 kHz), and no
+        // case gained energy. Overlaps: bounds of 0.1 r between balls (0.2 r with tools) and
+        // 0.05 r at walls that these cases stay within (a soft contact lets a ball in by the
+        // allowed linear error; one case measured 2.8e-7 r at a wall); not tightened yet.
+        .robustness = {.energyWithoutGravity = randomCaseRange(-1.0, 0.0),
+                       .energyUnderGravity = randomCaseRange(-1.0, 0.0),
+                       .energyUnderGravityWithCollisions = randomCaseRange(-1.0, 0.0),
+                       .energyUnderGravityOpen = randomCaseRange(-10.0, 0.0),
+                       .energyAbsolute = 1e-4,
+                       .wallSlack = 0.0,
+                       .ballOverlap = 0.1,
+                       .ballOverlapWithInteractions = 0.2,
+                       .wallOverlap = 0.05},
+        // WebAssembly without threads: the same bits on every run.
+        .determinismHash = 11813233135854230608u,
+        .failureMap = kRapierBoundaries,
+        .randomCases = 20,
+    },
 }};
 
 }  // namespace
 
 std::span<const BackendProfile> backendProfiles() {
   return kProfiles;
+}
+
+std::unique_ptr<Backend> createForConsistency(const BackendInfo& info) {
+  std::unique_ptr<Backend> backend = info.create();
+  const std::string_view option = profileFor(info.name).consistencyOption;
+  if (!option.empty()) backend->setOptionFromText(option);
+  return backend;
 }
 
 const BackendProfile& profileFor(std::string_view name) {

@@ -2,12 +2,14 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
 
 #include "consistency/method_errors.h"
 #include "interval.h"
+#include "registry.h"
 #include "robustness/case_limits.h"
 
 /// What the test suites need to know about each backend, in one table keyed by registry name
@@ -83,6 +85,14 @@ struct BackendProfile {
   /// tests/consistency/gas_statistics_test.cpp: relative kinetic-energy drift, either way, over
   /// the long run of a thermalised gas (at its end and on average over its snapshots).
   double gasEnergyDrift = 0.0;
+  /// tests/consistency/gas_statistics_test.cpp: how far its collision rate lies from the others'
+  /// by a known difference of its model (relative; 0: none), e.g. matter.js's circles, which are
+  /// polygons. The backends' rates are compared with this taken out.
+  double collisionRateOffset = 0.0;
+  /// Why its long gas cannot agree with the others', as it is and with every option it has (an
+  /// engine whose solver drains the energy with no knob to stop it: docs/accuracy.md), or empty.
+  /// The gas statistics test then says so for its pairs, instead of comparing them.
+  std::string_view gasStatisticsExemption;
   /// tests/robustness/random_invariants_test.cpp and the GUI monkey (tests/gui).
   robustness::Tolerances robustness;
   robustness::WorkCap workCap;  ///< tests/robustness/random_invariants_test.cpp
@@ -95,7 +105,18 @@ struct BackendProfile {
   /// One step of the app (1/60 s) can take minutes in states a user can reach (docs/accuracy.md):
   /// the GUI monkey, which waits for every step, adds no compare run of such a backend.
   bool stepsCanTakeMinutes = false;
+  /// tests/robustness/random_invariants_test.cpp: how many of the default cases it runs (0: all;
+  /// FOOBALL_SOAK runs all it asks). An engine in the Node.js host starts a Node.js process for
+  /// every case (0.1–0.3 s), so it runs the first few, as many as CI's time allows.
+  std::size_t randomCases = 0;
+  /// tests/consistency: the option (KEY=VALUE) under which its physics should agree with the
+  /// other backends', or empty: as it is. An engine whose users' settings lose energy by design
+  /// (docs/accuracy.md) is compared there with the knob that fixes it, e.g. "resting_thresh=0".
+  std::string_view consistencyOption;
 };
+
+/// `info`'s backend with its profile's consistencyOption set: what tests/consistency compares.
+std::unique_ptr<Backend> createForConsistency(const BackendInfo& info);
 
 /// Every row of the table, in table order.
 std::span<const BackendProfile> backendProfiles();

@@ -14,6 +14,12 @@ namespace fooball::cli {
 namespace {
 
 std::string rangeText(const OptionSpec& spec) {
+  if (!spec.choices.empty()) {
+    std::string names;
+    for (const std::string& choice : spec.choices)
+      names += (names.empty() ? "" : ", ") + choice;
+    return "one of " + names;
+  }
   return std::string(spec.integer ? "integer" : "number") + " in [" + exactNumberText(spec.min) +
          ", " + exactNumberText(spec.max) + "]";
 }
@@ -32,12 +38,16 @@ void printBackends(std::ostream& out) {
     heading.append(nameWidth - info.name.size() + 2, ' ');
     table.addLine("");
     table.addLine(heading + std::string(info.description));
+    if (const std::string reason = unavailableReason(info); !reason.empty())
+      table.addLine("      unavailable here: " + reason);
     const auto backend = info.create();
     const auto specs = backend->options().specs();
     if (specs.empty()) table.addLine("      (no options)");
     for (const OptionSpec& spec : specs) {
-      table.addRow({spec.name, "default " + exactNumberText(spec.defaultValue), rangeText(spec),
-                    spec.description});
+      const std::string defaultText =
+          spec.choices.empty() ? exactNumberText(spec.defaultValue)
+                               : spec.choices[static_cast<std::size_t>(spec.defaultValue)];
+      table.addRow({spec.name, "default " + defaultText, rangeText(spec), spec.description});
     }
   }
   table.print(out, 6);

@@ -24,7 +24,7 @@ echo "package: $(basename "${deb[0]}")"
 # Depends: the shared libraries dpkg-shlibdeps found, and the plugins and font loaded at run time.
 depends="$(dpkg-deb --field "${deb[0]}" Depends)"
 for needed in libqt6widgets6 libqt6charts6 libbox2d libchipmunk libbullet libavcodec libavformat \
-  libswscale qt6-qpa-plugins fonts-dejavu-core; do
+  libswscale qt6-qpa-plugins fonts-dejavu-core nodejs; do
   [[ "$depends" == *"$needed"* ]] || fail "Depends lacks $needed: $depends"
 done
 
@@ -34,7 +34,9 @@ share="$root/usr/share"
 for file in usr/bin/fooball usr/bin/fooball-cli usr/share/applications/fooball.desktop \
   usr/share/icons/hicolor/scalable/apps/fooball.svg \
   usr/share/metainfo/io.github.fooball.FooBall.metainfo.xml \
-  usr/share/man/man1/fooball.1.gz usr/share/man/man1/fooball-cli.1.gz; do
+  usr/share/man/man1/fooball.1.gz usr/share/man/man1/fooball-cli.1.gz \
+  usr/share/fooball/js/host.js usr/share/fooball/js/package-lock.json \
+  usr/share/fooball/js/node_modules/matter-js/package.json; do
   [ -f "$root/$file" ] || fail "missing $file"
 done
 
@@ -68,6 +70,11 @@ done
 summary="$("$root/usr/bin/fooball-cli" run --preset gas --duration 1 2>&1)" ||
   fail "fooball-cli run exited $?: $summary"
 grep -Eq '^ *steps: +60$' <<<"$summary" || fail "fooball-cli run's summary: $summary"
+
+# An engine in the Node.js host, from the installed share/fooball/js.
+summary="$("$root/usr/bin/fooball-cli" run --preset head-on --backend matter --duration 1 2>&1)" ||
+  fail "fooball-cli run --backend matter exited $?: $summary"
+grep -Eq '^ *ball collisions: +1$' <<<"$summary" || fail "the matter run's summary: $summary"
 
 frames="$(QT_QPA_PLATFORM=offscreen "$root/usr/bin/fooball" --frames 10 2>&1)" ||
   fail "fooball --frames 10 exited $?: $frames"

@@ -37,6 +37,9 @@ struct OptionSpec {
   double max = 0.0;
   bool integer = false;  ///< whole numbers only (counts); booleans are integers in [0, 1]
   OptionRole role = OptionRole::Other;
+  /// Named values, e.g. an engine's releases {"0.21.0", "0.19.3"}: the option's value is an index
+  /// into them (an integer in [0, size − 1]), and KEY=NAME sets it by name. Empty: a number.
+  std::vector<std::string> choices = {};
 };
 
 /// The values of a backend's options. Checks names and ranges, so backends can trust values.

@@ -1,0 +1,283 @@
+'use strict';
+// Rapier 2D (npm @dimforge/rapier2d-compat, WebAssembly) as its users set it up for restitution 1
+// (DESIGN.md, "Engines as their users set them up"); the option `version` picks one of the two
+// releases installed side by side under npm aliases (package.json). Per setting:
+// - restitution 1 and friction 0 on balls and walls, with the combine rules that give them
+//   (restitution Max, friction Min: 1 and 0 whatever the other collider says);
+// - rotations locked (RigidBodyDesc.lockRotations), linear and angular damping 0, sleeping off
+//   (setCanSleep(false)); FooBall's drag is kick.js's;
+// - mass set on the ball's collider (ColliderDesc.setMass), the scene's kg;
+// - continuous collision off, as a new body has it (option `ccd`);
+// - deeper knobs keep Rapier's defaults and are options named after its integration parameters:
+//   numSolverIterations 4, numInternalPgsIterations 1, and the contacts' natural frequency
+//   (contact_natural_frequency, 30 Hz; 0 here leaves the release's own). Rapier has no public
+//   restitution threshold. Its soft contacts (a spring of that frequency pushing overlaps apart,
+//   and restitution applied only to the approach it sees) are what change its energy
+//   (docs/accuracy.md).
+// - a ball whose centre has passed a wall that is on is brought back, mirrored inside with its
+//   normal speed reversed (containBalls), as the matter adapter does: without continuous
+//   collision a small fast ball can end a step beyond a wall's face, which the backend contract
+//   forbids.
+// Metres, y up, as FooBall's: Rapier's lengthUnit stays 1.
+
+const fs = require('fs');
+const path = require('path');
+const {kickVelocities} = require('./kick');
+const {WallImpulse} = require('./walls');
+
+const VERSIONS = ['0.21.0', '0.19.3'];  // the option's choices, in the C++ side's order
+const BALL = 6;
+const BALLS_GROUP = 0x0001;
+const WALLS_GROUP = 0x0002;
+
+/// The version in an installed package's package.json (which its "exports" do not let require()).
+function packageVersion(name) {
+  const file = path.join(__dirname, '..', 'node_modules', name, 'package.json');
+  return JSON.parse(fs.readFileSync(file, 'utf8')).version;
+}
+
+async function create() {
+  const releases = {};  // version → its module, initialised when a run first asks for it
+
+  let R = null;
+  let world = null;
+  let queue = null;
+  let bodies = [];
+  let masses = new Float64Array(0);
+  let colliderBall = new Map();  // collider handle → ball index, or −1 for a wall
+  let walls = {};                // side → collider
+  let wallBody = null;
+  let touchingWall = new Map();  // ball index → number of walls it touches
+  const metWall = new Set();     // balls with a wall contact beginning or ending in this step
+  let settings = {};
+  let scene = null;
+  let velocities = new Float64Array(0);
+  let wallImpulse = new WallImpulse(0);
+  let counters = null;
+
+  function groups(membership, filter) { return (membership << 16) | filter; }
+
+  function ballCollider(def, index) {
+    const desc = R.ColliderDesc.ball(def[4])
+                     .setRestitution(1)
+                     .setFriction(0)
+                     .setRestitutionCombineRule(R.CoefficientCombineRule.Max)
+                     .setFrictionCombineRule(R.CoefficientCombineRule.Min)
+                     .setMass(def[5])
+                     .setActiveEvents(R.ActiveEvents.COLLISION_EVENTS)
+                     .setCollisionGroups(groups(BALLS_GROUP, WALLS_GROUP |
+                                                (scene.world.ballCollisions ? BALLS_GROUP : 0)));
+    const collider = world.createCollider(desc, bodies[index]);
+    colliderBall.set(collider.handle, index);
+    return collider;
+  }
+
+  function addBall(def, index) {
+    const desc = R.RigidBodyDesc.dynamic()
+                     .setTranslation(def[0], def[1])
+                     .setLinvel(def[2], def[3])
+                     .lockRotations()
+                     .setLinearDamping(0)
+                     .setAngularDamping(0)
+                     .setCanSleep(false)
+                     .setCcdEnabled(settings.ccd);
+    bodies[index] = world.createRigidBody(desc);
+    ballCollider(def, index);
+  }
+
+  function syncWalls() {
+    const {width, height} = scene;
+    let largest = 0;
+    for (let i = 0; i < bodies.length; ++i) largest = Math.max(largest, scene.balls[BALL * i + 4]);
+    const t = Math.max(1, 4 * largest);  // m: thick, so a fast ball's step ends inside it
+    const shapes = {
+      left: [-t / 2, height / 2, t / 2, height / 2 + t],
+      right: [width + t / 2, height / 2, t / 2, height / 2 + t],
+      bottom: [width / 2, -t / 2, width / 2 + t, t / 2],
+      top: [width / 2, height + t / 2, width / 2 + t, t / 2],
+    };
+    for (const side of Object.keys(shapes)) {
+      const on = scene.world.walls[side];
+      if (on && !walls[side]) {
+        const [x, y, hx, hy] = shapes[side];
+        const desc = R.ColliderDesc.cuboid(hx, hy)
+                         .setTranslation(x, y)
+                         .setRestitution(1)
+                         .setFriction(0)
+                         .setRestitutionCombineRule(R.CoefficientCombineRule.Max)
+                         .setFrictionCombineRule(R.CoefficientCombineRule.Min)
+                         .setCollisionGroups(groups(WALLS_GROUP, BALLS_GROUP));
+        walls[side] = world.createCollider(desc, wallBody);
+        colliderBall.set(walls[side].handle, -1);
+      } else if (!on && walls[side]) {
+        colliderBall.delete(walls[side].handle);
+        world.removeCollider(walls[side], false);
+        delete walls[side];
+        touchingWall.clear();  // its stop events will not come: recounted from the next starts
+      }
+    }
+  }
+
+  function onCollision(handleA, handleB, started) {
+    const a = colliderBall.get(handleA);
+    const b = colliderBall.get(handleB);
+    if (a === undefined || b === undefined) return;
+    if (a >= 0 && b >= 0) {
+      if (started) counters.ballCollisions += 1;
+      return;
+    }
+    const ball = a >= 0 ? a : b;
+    if (ball < 0) return;
+    metWall.add(ball);
+    const touching = touchingWall.get(ball) || 0;
+    if (started) {
+      counters.wallCollisions += 1;
+      touchingWall.set(ball, touching + 1);
+    } else if (touching <= 1) {
+      touchingWall.delete(ball);
+    } else {
+      touchingWall.set(ball, touching - 1);
+    }
+  }
+
+  /// Brings back every ball whose centre is beyond a wall that is on; returns how many.
+  function containBalls() {
+    const {width, height} = scene;
+    const on = scene.world.walls;
+    let brought = 0;
+    for (const body of bodies) {
+      const p = body.translation();
+      let {x, y} = p;
+      const v = body.linvel();
+      let {x: vx, y: vy} = v;
+      if (on.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
+      if (on.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
+      if (on.bottom && y < 0) [y, vy] = [-y, Math.abs(vy)];
+      if (on.top && y > height) [y, vy] = [2 * height - y, -Math.abs(vy)];
+      if (x === p.x && y === p.y) continue;
+      body.setTranslation({x, y}, true);
+      body.setLinvel({x: vx, y: vy}, true);
+      ++brought;
+    }
+    return brought;
+  }
+
+  function readVelocities() {
+    for (let i = 0; i < bodies.length; ++i) {
+      const v = bodies[i].linvel();
+      velocities[2 * i] = v.x;
+      velocities[2 * i + 1] = v.y;
+    }
+  }
+
+  return {
+    version: VERSIONS.map((v) => 'rapier2d ' + packageVersion('rapier2d-' + v)).join(', '),
+
+    async prepare(options) {
+      const version = VERSIONS[options.version];
+      if (!releases[version]) {
+        const module = require('rapier2d-' + version);
+        await module.init();
+        releases[version] = module;
+      }
+    },
+
+    load(nextScene, options, sceneCounters) {
+      settings = {
+        version: VERSIONS[options.version],
+        numSolverIterations: options.num_solver_iterations,
+        numInternalPgsIterations: options.num_internal_pgs_iterations,
+        contactNaturalFrequency: options.contact_natural_frequency,
+        ccd: options.ccd !== 0,
+      };
+      counters = sceneCounters;
+      scene = nextScene;
+      if (world) world.free();
+      R = releases[settings.version];
+      world = new R.World({x: scene.world.gravity[0], y: scene.world.gravity[1]});
+      const parameters = world.integrationParameters;
+      parameters.numSolverIterations = settings.numSolverIterations;
+      parameters.numInternalPgsIterations = settings.numInternalPgsIterations;
+      if (settings.contactNaturalFrequency > 0) {
+        parameters.contact_natural_frequency = settings.contactNaturalFrequency;
+      }
+      if (queue) queue.free();
+      queue = new R.EventQueue(true);
+      const n = scene.balls.length / BALL;
+      bodies = new Array(n);
+      masses = new Float64Array(n);
+      colliderBall = new Map();
+      touchingWall = new Map();
+      walls = {};
+      wallBody = world.createRigidBody(R.RigidBodyDesc.fixed());
+      for (let i = 0; i < n; ++i) {
+        addBall(scene.balls.subarray(BALL * i, BALL * (i + 1)), i);
+        masses[i] = scene.balls[BALL * i + 5];
+      }
+      syncWalls();
+      velocities = new Float64Array(2 * n);
+      wallImpulse = new WallImpulse(n);
+    },
+
+    setWorld(next) {
+      const collisionsChanged = next.ballCollisions !== scene.world.ballCollisions;
+      scene.world = next;
+      world.gravity = {x: next.gravity[0], y: next.gravity[1]};
+      syncWalls();
+      if (collisionsChanged) {
+        const filter = WALLS_GROUP | (next.ballCollisions ? BALLS_GROUP : 0);
+        for (const body of bodies) {
+          body.collider(0).setCollisionGroups(groups(BALLS_GROUP, filter));
+        }
+      }
+    },
+
+    setBall(index, def) {
+      const body = bodies[index];
+      const old = body.collider(0);
+      colliderBall.delete(old.handle);
+      world.removeCollider(old, false);
+      touchingWall.delete(index);
+      body.setTranslation({x: def[0], y: def[1]}, true);
+      body.setLinvel({x: def[2], y: def[3]}, true);
+      ballCollider(def, index);
+      masses[index] = def[5];
+    },
+
+    step(dt, forces, stepCounters) {
+      counters = stepCounters;
+      readVelocities();
+      if (kickVelocities(velocities, masses, dt, forces, scene.world.airResistance, counters)) {
+        for (let i = 0; i < bodies.length; ++i) {
+          bodies[i].setLinvel({x: velocities[2 * i], y: velocities[2 * i + 1]}, true);
+        }
+      }
+      wallImpulse.remember(velocities);
+      world.timestep = dt;
+      world.step(queue);
+      counters.engineSteps += 1;
+      counters.ballsBroughtBack += containBalls();
+      metWall.clear();
+      queue.drainCollisionEvents(onCollision);
+      const charge = (i) => {
+        const v = bodies[i].linvel();
+        counters.wallImpulse += wallImpulse.charge(i, masses[i], v.x, v.y, scene.world.gravity, dt);
+      };
+      metWall.forEach(charge);
+      for (const i of touchingWall.keys()) charge(i);
+    },
+
+    readState(out) {
+      for (let i = 0; i < bodies.length; ++i) {
+        const p = bodies[i].translation();
+        const v = bodies[i].linvel();
+        out[4 * i] = p.x;
+        out[4 * i + 1] = p.y;
+        out[4 * i + 2] = v.x;
+        out[4 * i + 3] = v.y;
+      }
+    },
+  };
+}
+
+module.exports = {create};
