@@ -148,6 +148,20 @@ TEST(OptionSet, SetFromTextTakesTrueFalseOnOffForSwitches) {
   EXPECT_THROW(options.setFromText("tolerance=on"), std::invalid_argument);
 }
 
+TEST(OptionSet, SetFromTextTakesANamedChoiceByItsName) {
+  // An engine's releases, e.g. rapier's `version`: the value is the index of the name.
+  OptionSet options(
+      {{"version", "release", 0.0, 0.0, 1.0, true, OptionRole::Other, {"0.21.0", "0.19.3"}}});
+  options.setFromText("version=0.19.3");
+  EXPECT_EQ(options.value("version"), 1.0);
+  options.setFromText("version=0.21.0");
+  EXPECT_EQ(options.value("version"), 0.0);
+  EXPECT_THAT(errorOf([&] { options.setFromText("version=0.18.0"); }),
+              HasSubstr("'0.18.0' is not one of 0.21.0, 0.19.3"));
+  options.setFromText("version=1");  // the index, as saved files write it
+  EXPECT_EQ(options.value("version"), 1.0);
+}
+
 TEST(OptionSet, SetFromTextRejectsMalformedAssignments) {
   OptionSet options = sampleOptions();
   for (const char* bad :

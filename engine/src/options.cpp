@@ -67,14 +67,10 @@ void OptionSet::setFromText(std::string_view assignment) {
   const std::string_view name = assignment.substr(0, equals);
   const std::string_view text = assignment.substr(equals + 1);
   const OptionSpec& spec = specs_[indexOf(name)];
-  if (!spec.choices.empty()) {
-    std::string known;
-    for (std::size_t i = 0; i < spec.choices.size(); ++i) {
-      if (spec.choices[i] == text) return set(name, static_cast<double>(i));
-      known += (known.empty() ? "" : ", ") + spec.choices[i];
-    }
-    throw std::invalid_argument("option '" + spec.name + "': '" + std::string(text) +
-                                "' is not one of " + known);
+  std::string known;  // a named choice by its name; its index, as a number, also sets it
+  for (std::size_t i = 0; i < spec.choices.size(); ++i) {
+    if (spec.choices[i] == text) return set(name, static_cast<double>(i));
+    known += (known.empty() ? "" : ", ") + spec.choices[i];
   }
   const bool isSwitch = spec.integer && spec.min == 0.0 && spec.max == 1.0;
   if (isSwitch && (text == "true" || text == "on")) return set(name, 1.0);
@@ -83,7 +79,7 @@ void OptionSet::setFromText(std::string_view assignment) {
   const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
   if (result.ec != std::errc() || result.ptr != text.data() + text.size()) {
     throw std::invalid_argument("option '" + spec.name + "': '" + std::string(text) +
-                                "' is not a number");
+                                (known.empty() ? "' is not a number" : "' is not one of " + known));
   }
   set(name, value);
 }

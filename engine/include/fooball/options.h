@@ -38,7 +38,8 @@ struct OptionSpec {
   bool integer = false;  ///< whole numbers only (counts); booleans are integers in [0, 1]
   OptionRole role = OptionRole::Other;
   /// Named values, e.g. an engine's releases {"0.21.0", "0.19.3"}: the option's value is an index
-  /// into them (an integer in [0, size − 1]), and KEY=NAME sets it by name. Empty: a number.
+  /// into them (an integer in [0, size − 1]), and KEY=NAME sets it by name (KEY=INDEX too, as
+  /// saved files and tools write it). Empty: a number.
   std::vector<std::string> choices = {};
 };
 
