@@ -4,9 +4,11 @@
 
 #include <QComboBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProcess>
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <cmath>
@@ -155,6 +157,33 @@ TEST(FooballRecording, AFileThatCannotBeWrittenIsOneLine) {
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_EQ(unknown.err, QStringLiteral("fooball: error: --record: out.avi: unknown video type "
                                         "'.avi' (use .mp4, .webm or .gif)\n"));
+}
+
+TEST(FooballRecording, AnInterruptedRecordingIsAPlayableFile) {
+  // Ctrl+C or a SIGTERM mid-recording: the video ends at the frame it was on, finished.
+  QTemporaryDir folder;
+  const QString video = folder.filePath(QStringLiteral("long.gif"));
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+  QProcess process;
+  process.setProcessEnvironment(environment);
+  process.start(
+      QStringLiteral(FOOBALL_GUI_PATH),
+      {QStringLiteral("--preset"), QStringLiteral("gas"), QStringLiteral("--size"),
+       QStringLiteral("320x320"), QStringLiteral("--record"), video, QStringLiteral("--fps"),
+       QStringLiteral("25"), QStringLiteral("--frames"), QStringLiteral("100000")});
+  // Frames are being written once the file has some (FFmpeg writes in blocks of 32 kB).
+  ASSERT_TRUE(testing::waitUntil([&] { return QFileInfo(video).size() > 0; }, 60.0));
+  process.terminate();
+  ASSERT_TRUE(process.waitForFinished(60'000));
+  EXPECT_EQ(process.exitStatus(), QProcess::NormalExit);
+  EXPECT_EQ(process.exitCode(), 130);
+  const QString out = QString::fromLocal8Bit(process.readAllStandardOutput());
+  EXPECT_TRUE(out.contains(QStringLiteral("(interrupted)"))) << out.toStdString();
+  const auto decoded = decodeVideo(video.toStdString());
+  EXPECT_GT(decoded.frameCount, 0);
+  EXPECT_LT(decoded.frameCount, 100000);
+  EXPECT_EQ(decoded.width, 320);
 }
 
 class Recording : public GuiTest {
