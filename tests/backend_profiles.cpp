@@ -753,7 +753,8 @@ constexpr std::array<BackendProfile, 8> kProfiles = {{
                 // Verlet on positions: v += g·dt, then x += v·dt (Body.update).
                 .eulerFlight = true,
             },
-        // With resting_thresh=0 (consistencyOption): measured +1.5e-13 at the end, +8.6e-14 on
+        .consistencyOptions = "resting_thresh=0",
+        // With resting_thresh=0 (consistencyOptions): measured +1.5e-13 at the end, +8.6e-14 on
         // average (rounding of its position differences); three times the larger.
         .gasEnergyDrift = kGasDriftMargin * 1.52e-13,
         // Its circles are what Bodies.circle makes: polygons of max(10, min(25, r in px)) sides,
@@ -784,7 +785,6 @@ constexpr std::array<BackendProfile, 8> kProfiles = {{
         .determinismHash = 8227773526849075201u,
         .failureMap = kMatterBoundaries,
         .randomCases = 50,
-        .consistencyOption = "resting_thresh=0",
     },
     {
         .name = "rapier",
@@ -842,13 +842,6 @@ constexpr std::array<BackendProfile, 8> kProfiles = {{
 
 std::span<const BackendProfile> backendProfiles() {
   return kProfiles;
-}
-
-std::unique_ptr<Backend> createForConsistency(const BackendInfo& info) {
-  std::unique_ptr<Backend> backend = info.create();
-  const std::string_view option = profileFor(info.name).consistencyOption;
-  if (!option.empty()) backend->setOptionFromText(option);
-  return backend;
 }
 
 const BackendProfile& profileFor(std::string_view name) {

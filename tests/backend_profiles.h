@@ -109,14 +109,7 @@ struct BackendProfile {
   /// FOOBALL_SOAK runs all it asks). An engine in the Node.js host starts a Node.js process for
   /// every case (0.1–0.3 s), so it runs the first few, as many as CI's time allows.
   std::size_t randomCases = 0;
-  /// tests/consistency: the option (KEY=VALUE) under which its physics should agree with the
-  /// other backends', or empty: as it is. An engine whose users' settings lose energy by design
-  /// (docs/accuracy.md) is compared there with the knob that fixes it, e.g. "resting_thresh=0".
-  std::string_view consistencyOption;
 };
-
-/// `info`'s backend with its profile's consistencyOption set: what tests/consistency compares.
-std::unique_ptr<Backend> createForConsistency(const BackendInfo& info);
 
 /// Every row of the table, in table order.
 std::span<const BackendProfile> backendProfiles();

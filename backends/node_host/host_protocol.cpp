@@ -53,7 +53,7 @@ bool FrameReader::take(void* out, std::size_t size) {
     ok_ = false;
     return false;
   }
-  std::memcpy(out, payload_.data() + offset_, size);
+  if (size > 0) std::memcpy(out, payload_.data() + offset_, size);
   offset_ += size;
   return true;
 }

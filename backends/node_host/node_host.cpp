@@ -128,7 +128,9 @@ void NodeHost::exchangeForState() {
     fail({});
   }
   state_.resize(4 * std::size_t{balls});
-  std::memcpy(state_.data(), reply_.data() + kStateHeadBytes, state_.size() * sizeof(double));
+  // No balls: an empty vector's data() may be null, which memcpy must not be given.
+  if (!state_.empty())
+    std::memcpy(state_.data(), reply_.data() + kStateHeadBytes, state_.size() * sizeof(double));
 }
 
 void NodeHost::setOptions(const OptionSet& options) {
