@@ -124,10 +124,6 @@ double energyTolerance(std::string_view backend) {
 class GasStatistics : public ::testing::TestWithParam<BackendPair> {};
 
 TEST_P(GasStatistics, ThermalisedGasAgreesWithMaxwellBoltzmannAndAcrossBackends) {
-  for (const BackendInfo& info : {GetParam().first, GetParam().second}) {
-    const std::string_view exemption = testing::profileFor(info.name).gasStatisticsExemption;
-    if (!exemption.empty()) GTEST_SKIP() << info.name << ": " << exemption;
-  }
   const Scene scene = thermalGas();
   const Sampling sampling;
   GasRun runs[2] = {runGas(GetParam().first, scene, sampling),
@@ -190,8 +186,20 @@ TEST_P(GasStatistics, ThermalisedGasAgreesWithMaxwellBoltzmannAndAcrossBackends)
   testing::recordMeasurement("ks_two_sample", distance);
 }
 
+// Every pair but those with a backend whose row states why its gas cannot agree
+// (BackendProfile::gasStatisticsExemption): no test is made for them, rather than one skipped.
+std::vector<testing::BackendPair> pairsWithAThermalisedGas() {
+  std::vector<testing::BackendPair> pairs;
+  for (const testing::BackendPair& pair : testing::everyBackendPair()) {
+    if (testing::profileFor(pair.first.name).gasStatisticsExemption.empty() &&
+        testing::profileFor(pair.second.name).gasStatisticsExemption.empty())
+      pairs.push_back(pair);
+  }
+  return pairs;
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryBackendPair, GasStatistics,
-                         ::testing::ValuesIn(testing::everyBackendPair()), testing::pairName);
+                         ::testing::ValuesIn(pairsWithAThermalisedGas()), testing::pairName);
 
 }  // namespace
 }  // namespace fooball
