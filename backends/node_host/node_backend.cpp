@@ -4,17 +4,24 @@
 #include <utility>
 
 #include "host_files.h"
+#include "host_pool.h"
 #include "node_host.h"
 
 namespace fooball {
 
 namespace {
 
+using node_host::HostPool;
 using node_host::NodeHost;
 
 class NodeBackend final : public Backend {
  public:
   explicit NodeBackend(const JsEngine& engine) : Backend(engine.optionSpecs()), engine_(engine) {}
+  ~NodeBackend() override {
+    if (host_) HostPool::instance().giveBack(std::move(host_));
+  }
+  NodeBackend(const NodeBackend&) = delete;
+  NodeBackend& operator=(const NodeBackend&) = delete;
 
   void load(const Scene& scene) override {
     if (!host_) start();
@@ -78,9 +85,19 @@ class NodeBackend final : public Backend {
     if (!reason.empty()) {
       throw std::runtime_error(std::string(engine_.name) + ": unavailable here: " + reason);
     }
+    const std::string name(engine_.name);
+    // A kept host that has ended meanwhile (killed while it waited) fails its first request
+    // and is replaced by a new one, without a word: the run never used it.
+    if ((host_ = HostPool::instance().take(name))) {
+      try {
+        host_->setOptions(options_);
+        return;
+      } catch (const node_host::HostError&) {
+        host_.reset();
+      }
+    }
     const auto directory = node_host::hostDirectory();
-    host_ =
-        std::make_unique<NodeHost>(std::string(engine_.name), (*directory / "host.js").string());
+    host_ = std::make_unique<NodeHost>(name, (*directory / "host.js").string());
     call([&](NodeHost& host) { host.setOptions(options_); });
   }
 

@@ -36,6 +36,7 @@ class NodeHost {
   NodeHost(std::string engine, const std::string& hostScript,
            std::chrono::milliseconds timeout = kDefaultTimeout);
 
+  const std::string& engine() const { return engine_; }
   const std::string& nodeVersion() const { return nodeVersion_; }
   const std::string& engineVersion() const { return engineVersion_; }
 
