@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "capacity_search.h"
+#include "fooball/scene_file.h"
+#include "fooball/standard_scenes.h"
 #include "step_timing.h"
 #include "test_scenes.h"
 
@@ -224,6 +226,22 @@ TEST(CapacitySettingsCheck, WarmsUpForWholeStepsCoveringTheWarmUpTime) {
   EXPECT_THROW(checkCapacitySettings(registeredBackends(), settings), std::invalid_argument);
   settings.warmUpSeconds = std::nan("");
   EXPECT_THROW(checkCapacitySettings(registeredBackends(), settings), std::invalid_argument);
+}
+
+TEST(StandardGasFile, IsTheCapacityToolsGasAtTwoThousandBallsBitForBit) {
+  // docs/scenes/standard-gas-2000.json: the scene of the engines' table in README and
+  // docs/accuracy.md, for `fooball-cli compare --scene` and the app's File > Open.
+  const Scene file = loadSceneFile(FOOBALL_STANDARD_GAS_FILE);
+  const Scene gas = standardGas(2000, CapacitySettings{}.packingFraction);
+  EXPECT_EQ(file.box, gas.box);
+  EXPECT_EQ(file.world, gas.world);
+  ASSERT_EQ(file.balls.size(), gas.balls.size());
+  for (std::size_t i = 0; i < gas.balls.size(); ++i) {
+    EXPECT_EQ(file.balls[i].position, gas.balls[i].position) << "ball " << i;
+    EXPECT_EQ(file.balls[i].velocity, gas.balls[i].velocity) << "ball " << i;
+    EXPECT_EQ(file.balls[i].radius, gas.balls[i].radius) << "ball " << i;
+    EXPECT_EQ(file.balls[i].mass, gas.balls[i].mass) << "ball " << i;
+  }
 }
 
 }  // namespace

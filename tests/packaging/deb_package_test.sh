@@ -36,7 +36,8 @@ for file in usr/bin/fooball usr/bin/fooball-cli usr/share/applications/fooball.d
   usr/share/metainfo/io.github.fooball.FooBall.metainfo.xml \
   usr/share/man/man1/fooball.1.gz usr/share/man/man1/fooball-cli.1.gz \
   usr/share/fooball/js/host.js usr/share/fooball/js/package-lock.json \
-  usr/share/fooball/js/node_modules/matter-js/package.json; do
+  usr/share/fooball/js/node_modules/matter-js/package.json usr/share/doc/fooball/accuracy.md \
+  usr/share/doc/fooball/scenes/standard-gas-2000.json; do
   [ -f "$root/$file" ] || fail "missing $file"
 done
 
