@@ -29,22 +29,6 @@ measure::CapacitySettings settingsFrom(const CapacityOptions& options) {
   return settings;
 }
 
-std::string noteOf(const measure::CapacityResult& result) {
-  // A backend that is not native code says what it runs as (BackendInfo::runtime).
-  const std::string_view name =
-      std::string_view(result.backend).substr(0, result.backend.find(':'));
-  const std::string_view runtime = backendInfo(name).runtime;
-  std::string note = runtime.empty() ? "" : std::string(runtime) + " in Node.js";
-  const auto add = [&note](std::string_view text) {
-    note += (note.empty() ? "" : "; ") + std::string(text);
-  };
-  const measure::SearchOutcome& outcome = result.outcome;
-  if (outcome.reachedMaxBalls) add("the scene format's limit: capacity is higher");
-  if (outcome.timedOut) add("time limit: best count so far");
-  if (outcome.cancelled) add("cancelled");
-  return note;
-}
-
 void printTable(const std::vector<measure::CapacityResult>& results,
                 const measure::CapacitySettings& settings, std::ostream& out) {
   out << "Capacity: the most balls whose median step fits " << readableText(settings.budgetMs, 4)
@@ -60,7 +44,7 @@ void printTable(const std::vector<measure::CapacityResult>& results,
   for (const measure::CapacityResult& result : results) {
     table.addRow({result.backend, std::to_string(result.outcome.balls),
                   readableText(result.outcome.medianStepMs, 4) + " ms",
-                  std::to_string(result.outcome.probes.size()), noteOf(result)});
+                  std::to_string(result.outcome.probes.size()), measure::capacityNote(result)});
   }
   table.print(out, 2);
 }

@@ -32,16 +32,6 @@
 
 namespace fooball::gui {
 
-namespace {
-
-QString noteOf(const measure::SearchOutcome& outcome) {
-  if (outcome.reachedMaxBalls) return QObject::tr("the scene format's limit: capacity is higher");
-  if (outcome.timedOut) return QObject::tr("time limit: best count so far");
-  return {};
-}
-
-}  // namespace
-
 BenchmarkDialog::BenchmarkDialog(QWidget* parent) : QDialog(parent) {
   setObjectName(QStringLiteral("benchmarkDialog"));
   setWindowTitle(tr("Benchmark: capacity"));
@@ -260,7 +250,7 @@ void BenchmarkDialog::showResults() {
     cell(0, QString::fromStdString(result.backend));
     cell(1, QString::number(result.outcome.balls));
     cell(2, QString::number(result.outcome.medianStepMs, 'g', 4));
-    cell(3, noteOf(result.outcome));
+    cell(3, QString::fromStdString(measure::capacityNote(result)));
     ++row;
   }
   showChart(results_);

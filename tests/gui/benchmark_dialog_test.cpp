@@ -197,6 +197,21 @@ TEST_F(Benchmark, TinyBudgetRunGivesACapacityWithoutBlockingTheWindow) {
   EXPECT_GT(image.height(), 100);
 }
 
+TEST_F(Benchmark, AnEngineInNodeJsSaysWhatItRunsAsBesideItsCapacity) {
+  // matter.js is JavaScript: its capacity is not a native engine's, and the table says so.
+  open(stillBalls());
+  BenchmarkDialog* dialog = openDialog();
+  choose(dialog, QStringLiteral("matter"), QStringLiteral("4"));
+  QTest::mouseClick(dialog->runPanel()->startButton(), Qt::LeftButton);
+  ASSERT_TRUE(waitUntil([&] { return !dialog->running(); }, 60.0 * slowdown()));
+  ASSERT_EQ(dialog->resultsTable()->rowCount(), 1);
+  EXPECT_EQ(dialog->resultsTable()->item(0, 0)->text(), QStringLiteral("matter"));
+  EXPECT_GT(dialog->resultsTable()->item(0, 1)->text().toULongLong(), 0u);
+  EXPECT_TRUE(dialog->resultsTable()->item(0, 3)->text().startsWith(
+      QStringLiteral("JavaScript in Node.js")))
+      << dialog->resultsTable()->item(0, 3)->text().toStdString();
+}
+
 TEST_F(Benchmark, PausedSimulationStaysPausedAfterARun) {
   open(stillBalls());
   runs().setPaused(true);

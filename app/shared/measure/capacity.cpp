@@ -135,4 +135,19 @@ void writeCapacityCsv(std::ostream& out, std::span<const CapacityResult> results
   }
 }
 
+std::string capacityNote(const CapacityResult& result) {
+  const std::string_view name =
+      std::string_view(result.backend).substr(0, result.backend.find(':'));
+  const std::string_view runtime = backendInfo(name).runtime;
+  std::string note = runtime.empty() ? "" : std::string(runtime) + " in Node.js";
+  const auto add = [&note](std::string_view text) {
+    note += (note.empty() ? "" : "; ") + std::string(text);
+  };
+  const SearchOutcome& outcome = result.outcome;
+  if (outcome.reachedMaxBalls) add("the scene format's limit: capacity is higher");
+  if (outcome.timedOut) add("time limit: best count so far");
+  if (outcome.cancelled) add("cancelled");
+  return note;
+}
+
 }  // namespace fooball::measure

@@ -84,6 +84,11 @@ inline std::vector<CapacityResult> measureCapacity(
   return measureCapacity(defaultRuns(backends), settings, progress, std::move(stop));
 }
 
+/// What a reader must know beside a result, "" if nothing: what a backend that is not native
+/// code runs as (BackendInfo::runtime, e.g. "WebAssembly in Node.js"), and a search that ended
+/// early, e.g. "time limit: best count so far". The CLI's table and Tools → Benchmark show it.
+std::string capacityNote(const CapacityResult& result);
+
 /// The `capacity --csv` header, as DESIGN.md states it.
 inline constexpr std::string_view kCapacityCsvHeader = "backend,balls,median_step_ms";
 
