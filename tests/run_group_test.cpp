@@ -712,6 +712,103 @@ TEST(RunGroup, AbandonedStepsLeaveEveryRunWhereItWasAndTheRunsGoOn) {
   expectBitwiseSame(*group.baseline(), *uninterrupted.baseline());
 }
 
+/// Forwards to a real backend and throws from its kFailingStep-th step on, as an engine whose
+/// process died does (node_host::HostError).
+class DyingBackend final : public Backend {
+ public:
+  static constexpr int kFailingStep = 10;
+  explicit DyingBackend(std::unique_ptr<Backend> inner) : Backend({}), inner_(std::move(inner)) {}
+  void load(const Scene& scene) override { inner_->load(scene); }
+  void setWorld(const WorldSettings& world) override { inner_->setWorld(world); }
+  void step(double dt, std::span<const Vec2> forces) override {
+    if (++steps_ >= kFailingStep) throw std::runtime_error("dying: the engine's process died");
+    inner_->step(dt, forces);
+  }
+  void setBall(std::size_t index, const BallDef& ball) override { inner_->setBall(index, ball); }
+  std::size_t ballCount() const override { return inner_->ballCount(); }
+  void readState(std::span<Vec2> positions, std::span<Vec2> velocities) const override {
+    inner_->readState(positions, velocities);
+  }
+  BackendCounters counters() const override { return inner_->counters(); }
+
+ private:
+  std::unique_ptr<Backend> inner_;
+  int steps_ = 0;
+};
+
+/// Runs of "elastic:substeps=1" die at their kFailingStep-th step; every other spec is itself.
+std::unique_ptr<Backend> makeDyingBackend(const RunSpec& spec) {
+  if (spec.text() != "elastic:substeps=1") return createBackend(spec);
+  return std::make_unique<DyingBackend>(createBackend(spec));
+}
+
+/// `count` lockstep steps as a threaded driver takes them; the failures finishSteps() reported.
+std::vector<RunGroup::StepFailure> stepInParts(RunGroup& group, int count) {
+  std::vector<RunGroup::StepFailure> failures;
+  std::vector<BackendStep> steps;
+  for (int i = 0; i < count; ++i) {
+    group.beginSteps(steps);
+    for (BackendStep& step : steps)
+      step.run();
+    for (RunGroup::StepFailure& failure : group.finishSteps(steps))
+      failures.push_back(std::move(failure));
+  }
+  return failures;
+}
+
+TEST(RunGroup, ARunWhoseStepFailsIsRemovedWithItsReasonAndTheOthersGoOn) {
+  const std::vector<RunSpec> specs = specsOf({"elastic", "elastic:substeps=1", "exact"});
+  RunGroup group(gas(40), specs, &makeDyingBackend);
+  RunGroup untouched = groupOf(gas(40), {"elastic", "exact"});
+  group.setBaseline(true);
+  const std::vector<RunGroup::StepFailure> failures = stepInParts(group, 20);
+  untouched.runFor(20 * kDt);
+
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].run, std::optional<std::size_t>(1));
+  EXPECT_EQ(failures[0].label, "elastic:substeps=1");
+  EXPECT_EQ(failures[0].message, "dying: the engine's process died");
+  ASSERT_EQ(group.runCount(), 2u);
+  EXPECT_EQ(group.spec(0).text(), "elastic");
+  EXPECT_EQ(group.spec(1).text(), "exact");
+  EXPECT_TRUE(group.hasBaseline()) << "run 0 went on, and so does its baseline";
+  EXPECT_FALSE(group.paused());
+  EXPECT_EQ(group.steps(), 20u) << "the other runs took every step";
+  expectBitwiseSame(untouched.run(0), group.run(0));
+  expectBitwiseSame(untouched.run(1), group.run(1));
+}
+
+TEST(RunGroup, WhenEveryRunFailsTheyStayWhereTheStepBeganPausedAndGoOnWhenPlayed) {
+  RunGroup group(gas(40), specsOf({"elastic:substeps=1"}), &makeDyingBackend);
+  const std::vector<RunGroup::StepFailure> failures =
+      stepInParts(group, DyingBackend::kFailingStep);
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].label, "elastic:substeps=1");
+  ASSERT_EQ(group.runCount(), 1u) << "the only run is kept, with the scene";
+  EXPECT_EQ(group.ballCount(), 40u);
+  EXPECT_EQ(group.steps(), std::uint64_t(DyingBackend::kFailingStep - 1))
+      << "back at the state before the failed step";
+  EXPECT_TRUE(group.paused());
+  // On a new backend of its spec: it steps again.
+  group.setPaused(false);
+  EXPECT_TRUE(stepInParts(group, 3).empty());
+  EXPECT_EQ(group.steps(), std::uint64_t(DyingBackend::kFailingStep + 2));
+}
+
+TEST(RunGroup, AFailedStepOnOneThreadIsAnErrorInTheSingleThreadedStep) {
+  // RunGroup::step() and Simulation::step(), as fooball-cli runs them: the backend's line.
+  RunGroup group(gas(40), specsOf({"elastic:substeps=1"}), &makeDyingBackend);
+  for (int i = 1; i < DyingBackend::kFailingStep; ++i)
+    group.step();
+  try {
+    group.step();
+    ADD_FAILURE() << "the failed step went unreported";
+  } catch (const std::runtime_error& error) {
+    EXPECT_STREQ(error.what(), "dying: the engine's process died");
+  }
+  EXPECT_EQ(group.ballCount(), 40u) << "the state is still there to save";
+}
+
 // --- real-time driving -------------------------------------------------------------------------
 
 TEST(RunGroup, TakeDueStepsAccumulatesFractionalFrames) {

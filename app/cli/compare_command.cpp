@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -179,7 +180,9 @@ void compareCommand(const CompareOptions& options, std::ostream& out) {
       pending[i].run();
       recorder.addSteppingTime(i, Clock::now() - begin);
     }
-    group.finishSteps(pending);
+    // A run whose backend failed ends the comparison, with the backend's line (exit 1).
+    if (const auto failures = group.finishSteps(pending); !failures.empty())
+      throw std::runtime_error(failures.front().message);
     recorder.checkDeparture();
     const bool last = step == steps;
     if (csv && (step % every == 0 || last)) recorder.writeCsvRows(*csv);

@@ -211,6 +211,15 @@ void MainWindow::connectRuns() {
     updateStatusBar();
     view_->update();
   });
+  // Queued: the message box's own event loop must not run inside the frame that collected the
+  // failed step.
+  connect(
+      runs_.get(), &RunController::runsFailed, this,
+      [this](const QString& lines) {
+        charts_->addMarker(runs_->group().time(), tr("a run stopped"));
+        reportError_(tr("A run stopped"), lines);
+      },
+      Qt::QueuedConnection);
   connect(runs_.get(), &RunController::runsRestarted, this, [this](double time) {
     charts_->addMarker(time, tr("runs restarted identical"));
     showStatus(tr("Every run restarted from run 0's state at t = %1 s, so that all start "

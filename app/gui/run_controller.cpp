@@ -216,8 +216,24 @@ bool RunController::collectSteps(std::chrono::milliseconds patience) {
     }
     steps_[i] = workers_[i]->take();
   }
-  group_.finishSteps(steps_);
+  const std::vector<RunGroup::StepFailure> failures = group_.finishSteps(steps_);
+  if (!failures.empty()) reportFailures(failures);
   return true;
+}
+
+void RunController::reportFailures(const std::vector<RunGroup::StepFailure>& failures) {
+  const bool removed = group_.runCount() < timing_.size();
+  QStringList lines;
+  for (auto failure = failures.rbegin(); failure != failures.rend(); ++failure) {
+    if (removed && failure->run) timing_.erase(timing_.begin() + std::ptrdiff_t(*failure->run));
+    lines.prepend(
+        tr("%1 stopped: %2")
+            .arg(QString::fromStdString(failure->label), QString::fromStdString(failure->message)));
+  }
+  matchWorkersToRuns();
+  emit runsChanged();
+  if (group_.paused()) emit pausedChanged(true);
+  emit runsFailed(lines.join(QLatin1Char('\n')));
 }
 
 void RunController::settle() {

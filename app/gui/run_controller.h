@@ -144,6 +144,10 @@ class RunController : public QObject {
   /// The runs were rewound to simulated time `time` (s).
   void rewound(double time);
   void selectionChanged(std::optional<std::size_t> index);
+  /// Runs' steps failed (an engine's process died, say): one line each, "SPEC stopped: WHY".
+  /// Those runs are gone and the others go on; if every run failed, the runs are back where the
+  /// step began and paused (RunGroup::finishSteps).
+  void runsFailed(const QString& lines);
 
  private:
   /// Runs `steps` steps of every run, calling `whileFirstStepRuns` (if set) while the first is
@@ -156,6 +160,8 @@ class RunController : public QObject {
   void settle();
   /// One worker per run and baseline, one timing per run.
   void matchWorkersToRuns();
+  /// After finishSteps() failed some: the timings of the runs it removed go, then the signals.
+  void reportFailures(const std::vector<RunGroup::StepFailure>& failures);
 
   RunGroup group_;
   std::vector<BackendStep> steps_;  ///< the steps out, in RunGroup::beginSteps order

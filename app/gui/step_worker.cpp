@@ -2,7 +2,6 @@
 
 #include <atomic>
 #include <condition_variable>
-#include <exception>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -24,8 +23,7 @@ struct StepWorker::Shared {
   std::chrono::steady_clock::time_point started;  ///< handed over, then begun on the thread
   std::chrono::steady_clock::duration ran{};      ///< how long the step ran, once done
   bool done = false;                              ///< the step has run
-  bool givenUp = false;      ///< the window is gone: finish the step, if any, and end
-  std::exception_ptr error;  ///< what the step threw
+  bool givenUp = false;  ///< the window is gone: finish the step, if any, and end
 
   void serve() {
     std::unique_lock lock(mutex);
@@ -35,15 +33,9 @@ struct StepWorker::Shared {
         // The step's cost starts here, not at start(): waking this thread is none of it.
         started = std::chrono::steady_clock::now();
         lock.unlock();
-        std::exception_ptr thrown;
-        try {
-          step->run();
-        } catch (...) {
-          thrown = std::current_exception();  // take() throws it on the window's thread
-        }
+        step->run();  // a failure stays in the step (BackendStep::failure)
         lock.lock();
         ran = std::chrono::steady_clock::now() - started;
-        error = thrown;
         done = true;
         changed.notify_all();
         if (givenUp) --givenUpSteps;
@@ -73,7 +65,6 @@ void StepWorker::start(BackendStep step) {
     shared_->step = std::move(step);
     shared_->started = std::chrono::steady_clock::now();
     shared_->done = false;
-    shared_->error = nullptr;
   }
   busy_ = true;
   shared_->changed.notify_all();
@@ -87,7 +78,6 @@ bool StepWorker::finishedBy(std::chrono::steady_clock::time_point deadline) {
 BackendStep StepWorker::take() {
   const std::lock_guard lock(shared_->mutex);
   busy_ = false;
-  if (shared_->error) std::rethrow_exception(shared_->error);
   BackendStep step = std::move(*shared_->step);
   shared_->step.reset();
   return step;

@@ -392,13 +392,53 @@ void RunGroup::beginSteps(std::vector<BackendStep>& steps) {
   stepping_ = true;
 }
 
-void RunGroup::finishSteps(std::vector<BackendStep>& steps) {
-  std::size_t next = 0;
-  forEachSimulation(
-      [&](Simulation& simulation) { simulation.finishStep(std::move(steps[next++])); });
-  steps.clear();
+std::vector<RunGroup::StepFailure> RunGroup::finishSteps(std::vector<BackendStep>& steps) {
   stepping_ = false;
-  recordHistory();
+  std::vector<StepFailure> failures;
+  std::vector<std::size_t> failedRuns;
+  bool baselineFailed = false;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i].failure().empty()) continue;
+    if (i == runs_.size()) {
+      baselineFailed = true;
+      failures.push_back({std::nullopt, "baseline", steps[i].failure()});
+    } else {
+      failedRuns.push_back(i);
+      failures.push_back({i, runs_[i].spec.text(), steps[i].failure()});
+    }
+  }
+  if (failures.empty()) {
+    std::size_t next = 0;
+    forEachSimulation(
+        [&](Simulation& simulation) { simulation.finishStep(std::move(steps[next++])); });
+    steps.clear();
+    recordHistory();
+    return failures;
+  }
+  if (failedRuns.size() == runs_.size()) {
+    // Nothing to go on with: back to the state before the step, in lockstep, paused.
+    steps.clear();
+    for (Run& run : runs_)
+      run.simulation->abandonStep(makeBackend(run.spec));
+    if (baseline_) baseline_->abandonStep(makeBackend(runs_.front().spec));
+    setPaused(true);
+    restartHistory();
+    return failures;
+  }
+  std::size_t next = 0;
+  forEachSimulation([&](Simulation& simulation) {
+    BackendStep& step = steps[next++];
+    if (step.failure().empty()) simulation.finishStep(std::move(step));
+  });
+  steps.clear();
+  for (auto index = failedRuns.rbegin(); index != failedRuns.rend(); ++index)
+    runs_.erase(runs_.begin() + static_cast<std::ptrdiff_t>(*index));
+  // A baseline is run 0's copy: it starts again from the new run 0, or where its own step failed.
+  if (baseline_ && (baselineFailed || (!failedRuns.empty() && failedRuns.front() == 0)))
+    setBaseline(true);
+  shareCores(cores_);
+  restartHistory();
+  return failures;
 }
 
 void RunGroup::abandonSteps() {

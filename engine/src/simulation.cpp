@@ -165,12 +165,22 @@ void Simulation::setDt(double dt) {
 }
 
 void BackendStep::run() {
-  backend_->step(dt_, withForces_ ? std::span<const Vec2>(forces_) : std::span<const Vec2>());
+  try {
+    backend_->step(dt_, withForces_ ? std::span<const Vec2>(forces_) : std::span<const Vec2>());
+  } catch (const std::exception& error) {
+    failure_ = error.what();
+  }
 }
 
 void Simulation::step() {
   BackendStep step = beginStep();
   step.run();
+  if (!step.failure().empty()) {
+    std::string why = std::move(step.failure_);
+    backend_ = std::move(step.backend_);  // failed: its next step throws again
+    forces_ = std::move(step.forces_);
+    throw std::runtime_error(why);
+  }
   finishStep(std::move(step));
 }
 

@@ -173,8 +173,18 @@ class RunGroup {
   /// run, then the baseline's. `steps` is caller-owned so that stepping allocates nothing.
   /// While they are out (stepping()), everything but the backends stays readable.
   void beginSteps(std::vector<BackendStep>& steps);
-  /// Takes them back, all at once, in the order beginSteps() gave them.
-  void finishSteps(std::vector<BackendStep>& steps);
+  /// A step that failed (BackendStep::failure): whose, and why.
+  struct StepFailure {
+    std::optional<std::size_t> run;  ///< the run's index when the step began; none: the baseline
+    std::string label;               ///< the run's spec text, or "baseline"
+    std::string message;             ///< the backend's one line
+  };
+  /// Takes them back, all at once, in the order beginSteps() gave them. A failed step ends its
+  /// run and the others go on: the runs that failed are removed and a failed baseline starts
+  /// again from run 0. If no run stepped, none is removed: every run and the baseline go back to
+  /// the state before the step on new backends of their specs, and the group pauses. Returns the
+  /// failures, empty when every step ran.
+  std::vector<StepFailure> finishSteps(std::vector<BackendStep>& steps);
   /// Gives the steps that are out up for good: every run continues from the state before them
   /// on a fresh backend of its spec. Whoever runs the old ones should requestStop() them.
   void abandonSteps();

@@ -20,9 +20,13 @@ namespace fooball {
 /// the tools' forces until Simulation::finishStep() takes them back.
 class BackendStep {
  public:
-  /// Steps the backend; on any thread, once.
+  /// Steps the backend; on any thread, once. A backend that throws fails the step instead (an
+  /// engine whose process died, say): failure() says why in one line, and the simulation goes on
+  /// from the state before it on a new backend (RunGroup::finishSteps).
   void run();
   Backend& backend() { return *backend_; }
+  /// Why the step failed; empty if it ran.
+  const std::string& failure() const { return failure_; }
 
  private:
   friend class Simulation;
@@ -31,6 +35,7 @@ class BackendStep {
   bool withForces_ = false;
   double dt_ = 0.0;    // s
   double work_ = 0.0;  // J, done by the forces' kick, booked when the step finishes
+  std::string failure_;
 };
 
 /// Drives one backend at a fixed time step: forces from the interactions, backend switching
