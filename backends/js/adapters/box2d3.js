@@ -37,10 +37,106 @@ function packageVersion() {
   return JSON.parse(fs.readFileSync(file, 'utf8')).version;
 }
 
+/// Every ball's state after a step, read straight out of the WebAssembly heap with typed-array
+/// views: body by body through the bindings (each a few calls, an allocation and a copy) costs
+/// more than the step itself at 10,000 balls (docs/performance.md).
+/// - Positions: the step's body move events (b2World_GetBodyEvents), an array of
+///   b2BodyMoveEvent {void* userData; b2Transform transform; b2BodyId bodyId; bool fellAsleep},
+///   32 bytes each, one per awake body; the binding's b2BodyEvents copy {moveEvents, moveCount}
+///   holds where it is.
+/// - Velocities: the awake set's b2BodyState array (linearVelocity first), which no binding hands
+///   out: found at each load by marking two balls' velocities and finding the marks in the memory
+///   above the stack (its slots keep copies of the vectors handed over). Sleeping is
+///   off and no body is added or removed until the next load, so it stays where it is, in the
+///   order of the move events.
+/// Each step checks what it relies on (the events' body ids in ball order, one ball's velocity
+/// against b2Body_GetLinearVelocity, in turn) and fails the run with a clear error otherwise.
+class HeapState {
+  constructor(B, memory) {
+    this.B = B;
+    this.memory = memory;
+    this.velocityBase = 0;  // byte address of ball 0's b2BodyState
+    this.velocityStride = 0;
+    this.checked = 0;  // the ball whose velocity the next step checks
+  }
+
+  floats() { return new Float32Array(this.memory.buffer); }
+
+  /// Finds the b2BodyState array of the world just loaded; `state` holds the balls' velocities.
+  locateVelocities(bodies, state, setVelocity, clearVector) {
+    if (bodies.length === 0) return;
+    const marks = [[-12345.6789, 9876.54321], [-23456.7891, 8765.43219]];
+    const count = Math.min(2, bodies.length);
+    for (let i = 0; i < count; ++i) setVelocity(i, marks[i][0], marks[i][1]);
+    clearVector();  // the vector that handed them over holds no mark
+    const f = this.floats();
+    const mark = marks.map(([x, y]) => [Math.fround(x), Math.fround(y)]);
+    const found = [];
+    // Above the stack, whose slots keep copies of the last vectors handed over: in the memory
+    // malloc hands out.
+    const heapStart = (this.B.stackSave() + 3) >> 2;
+    for (let k = heapStart; k + 1 < f.length && found.length < count; ++k) {
+      const i = found.length;
+      if (f[k] === mark[i][0] && f[k + 1] === mark[i][1]) found.push(4 * k);
+    }
+    for (let i = 0; i < count; ++i) setVelocity(i, state[4 * i + 2], state[4 * i + 3]);
+    if (found.length < count || (count === 2 && found[1] <= found[0])) {
+      throw new Error('box2d3: the balls\' velocities were not found in the WebAssembly heap');
+    }
+    this.velocityBase = found[0];
+    this.velocityStride = count === 2 ? found[1] - found[0] : 0;
+    this.checked = 0;
+    const g = this.floats();
+    for (let i = 0; i < bodies.length; ++i) {
+      const at = (this.velocityBase + i * this.velocityStride) >> 2;
+      if (g[at] !== state[4 * i + 2] || g[at + 1] !== state[4 * i + 3]) {
+        throw new Error(`box2d3: ball ${i}'s velocity is not where the heap layout puts it`);
+      }
+    }
+  }
+
+  /// Every ball's x, y, vx, vy after a step into `state`.
+  read(worldId, bodies, state) {
+    const n = bodies.length;
+    if (n === 0) return;
+    const events = this.B.b2World_GetBodyEvents(worldId);
+    const words = new Uint32Array(this.memory.buffer);
+    const moveEvents = words[events.$$.ptr >> 2];
+    const moveCount = words[(events.$$.ptr >> 2) + 1];
+    events.delete();
+    if (moveCount !== n) {
+      throw new Error(`box2d3: ${moveCount} body move events for ${n} balls`);
+    }
+    const f = new Float32Array(this.memory.buffer);
+    const ids = new Int32Array(this.memory.buffer);
+    for (let i = 0; i < n; ++i) {
+      const event = (moveEvents >> 2) + 8 * i;
+      if (ids[event + 5] !== bodies[i].index1) {
+        throw new Error(`box2d3: body move event ${i} is not ball ${i}'s`);
+      }
+      const velocity = (this.velocityBase + i * this.velocityStride) >> 2;
+      state[4 * i] = f[event + 1];
+      state[4 * i + 1] = f[event + 2];
+      state[4 * i + 2] = f[velocity];
+      state[4 * i + 3] = f[velocity + 1];
+    }
+    const i = this.checked;
+    this.checked = (i + 1) % n;
+    const v = this.B.b2Body_GetLinearVelocity(bodies[i]);
+    const same = v.x === state[4 * i + 2] && v.y === state[4 * i + 3];
+    v.delete();
+    if (!same) throw new Error(`box2d3: ball ${i}'s velocity in the heap is not Box2D's`);
+  }
+}
+
 async function create() {
   // The package is an ES module only: import() it from this CommonJS host.
   const {default: factory} = await import('box2d3-wasm');
-  const B = await factory({pthreadCount: 0});
+  // Its own memory, as Emscripten's Module.wasmMemory (the package's defaults: 16 MiB, shared,
+  // up to 2 GiB), so the views below always see its current buffer when it grows.
+  const memory = new WebAssembly.Memory({initial: 256, maximum: 32768, shared: true});
+  const B = await factory({pthreadCount: 0, wasmMemory: memory});
+  const heap = new HeapState(B, memory);
 
   const vec = new B.b2Vec2(0, 0);  // reused for every vector handed to Box2D
   const identity = B.b2MakeRot(0);
@@ -60,7 +156,6 @@ async function create() {
   let settings = {};
   let scene = null;
   let state = new Float64Array(0);  // x, y, vx, vy per ball, as Box2D has them now
-  let stateFresh = false;           // false: `state` must be read from Box2D again
   let velocities = new Float64Array(0);
   let wallImpulse = new WallImpulse(0);
   let counters = null;
@@ -180,9 +275,9 @@ async function create() {
     events.delete();
   }
 
-  /// Every ball's position and velocity into `state`, once per change.
+  /// Every ball's position and velocity into `state`, body by body through the bindings (at a
+  /// load; a step reads them from the heap: HeapState).
   function readAll() {
-    if (stateFresh) return;
     for (let i = 0; i < bodies.length; ++i) {
       const p = B.b2Body_GetPosition(bodies[i]);
       const v = B.b2Body_GetLinearVelocity(bodies[i]);
@@ -193,7 +288,11 @@ async function create() {
       p.delete();
       v.delete();
     }
-    stateFresh = true;
+  }
+
+  /// What Box2D keeps of a ball's position and velocity just set: float.
+  function keep(i, x, y, vx, vy) {
+    state.set([Math.fround(x), Math.fround(y), Math.fround(vx), Math.fround(vy)], 4 * i);
   }
 
   function setPosition(i, x, y) {
@@ -222,9 +321,9 @@ async function create() {
       if (x === px && y === py) continue;
       setPosition(i, x, y);
       setVelocity(i, vx, vy);
+      keep(i, x, y, vx, vy);
       ++brought;
     }
-    if (brought > 0) stateFresh = false;  // read back as Box2D rounds them
     return brought;
   }
 
@@ -271,7 +370,8 @@ async function create() {
       }
       syncWalls();
       state = new Float64Array(4 * n);
-      stateFresh = false;
+      readAll();
+      heap.locateVelocities(bodies, state, setVelocity, () => setVec(0, 0));
       velocities = new Float64Array(2 * n);
       wallImpulse = new WallImpulse(n);
     },
@@ -300,12 +400,11 @@ async function create() {
       setVelocity(index, def[2], def[3]);
       ballShape(def, index);
       masses[index] = def[5];
-      stateFresh = false;
+      keep(index, def[0], def[1], def[2], def[3]);
     },
 
     step(dt, forces, stepCounters) {
       counters = stepCounters;
-      readAll();
       for (let i = 0; i < bodies.length; ++i) {
         velocities[2 * i] = state[4 * i + 2];
         velocities[2 * i + 1] = state[4 * i + 3];
@@ -315,11 +414,9 @@ async function create() {
       }
       wallImpulse.remember(velocities);
       B.b2World_Step(worldId, dt, settings.substeps);
-      stateFresh = false;
       counters.engineSteps += 1;
-      readAll();
+      heap.read(worldId, bodies, state);
       counters.ballsBroughtBack += containBalls();
-      readAll();
       metWall.clear();
       drainContactEvents();
       const charge = (i) => {
@@ -331,7 +428,6 @@ async function create() {
     },
 
     readState(out) {
-      readAll();
       out.set(state);
     },
   };
