@@ -12,8 +12,11 @@ namespace {
 // users set to 0 for restitution 1.
 std::vector<OptionSpec> box2d3OptionSpecs() {
   return {
+      // Solver iterations in FooBall's sense (as Rapier's num_solver_iterations): Box2D v3 finds
+      // contacts, and takes each contact's approach speed for restitution, once per step; its
+      // sub-steps only solve them again (docs/accuracy.md).
       {"substeps", "Box2D v3 sub-steps per step (b2World_Step's subStepCount; its samples' 4)", 4.0,
-       1.0, 64.0, true, OptionRole::Substeps},
+       1.0, 64.0, true, OptionRole::Iterations},
       {"restitution_threshold",
        "m/s, approach speed below which Box2D v3 applies no restitution "
        "(b2WorldDef.restitutionThreshold; its default 1, 0 as its users set it for restitution 1)",
