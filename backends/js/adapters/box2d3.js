@@ -58,9 +58,20 @@ class HeapState {
     this.velocityBase = 0;  // byte address of ball 0's b2BodyState
     this.velocityStride = 0;
     this.checked = 0;  // the ball whose velocity the next step checks
+    this.views = null;  // typed arrays over the memory's buffer, made again when it grows
   }
 
-  floats() { return new Float32Array(this.memory.buffer); }
+  /// Views of the whole memory as it is now.
+  heap() {
+    const buffer = this.memory.buffer;
+    if (!this.views || this.views.bytes !== buffer.byteLength) {
+      this.views = {bytes: buffer.byteLength, f32: new Float32Array(buffer),
+                    i32: new Int32Array(buffer)};
+    }
+    return this.views;
+  }
+
+  floats() { return this.heap().f32; }
 
   /// Finds the b2BodyState array of the world just loaded; `state` holds the balls' velocities.
   locateVelocities(bodies, state, setVelocity, clearVector) {
@@ -100,15 +111,13 @@ class HeapState {
     const n = bodies.length;
     if (n === 0) return;
     const events = this.B.b2World_GetBodyEvents(worldId);
-    const words = new Uint32Array(this.memory.buffer);
-    const moveEvents = words[events.$$.ptr >> 2];
-    const moveCount = words[(events.$$.ptr >> 2) + 1];
+    const {f32: f, i32: ids} = this.heap();
+    const moveEvents = ids[events.$$.ptr >> 2];
+    const moveCount = ids[(events.$$.ptr >> 2) + 1];
     events.delete();
     if (moveCount !== n) {
       throw new Error(`box2d3: ${moveCount} body move events for ${n} balls`);
     }
-    const f = new Float32Array(this.memory.buffer);
-    const ids = new Int32Array(this.memory.buffer);
     for (let i = 0; i < n; ++i) {
       const event = (moveEvents >> 2) + 8 * i;
       if (ids[event + 5] !== bodies[i].index1) {
