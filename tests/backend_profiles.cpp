@@ -316,7 +316,7 @@ constexpr BoundaryExpectation kMatterBoundaries[] = {
     {.sweep = "pile", .failsAbove = 0.5},
 };
 
-// Rapier 2D 0.21.0 at its users' settings, measured on the quick grid (full grid for tunnelling).
+// Box2D v3 at its users' settings, measured on the quick grid (full grid for tunnelling).
 constexpr BoundaryExpectation kBox2d3Boundaries[] = {
     // Its speculative contacts met every shot of the small ball, at a ball and at a wall, up to 16
     // radii per step (one Box2D step: it finds contacts once a step, the sub-steps only solve
@@ -342,6 +342,8 @@ constexpr BoundaryExpectation kBox2d3Boundaries[] = {
     // The pile holds to ten metres per second squared (energy 0.013 of Σ m·g·r), not 100 (0.13).
     pileGivesWayBetween(10.0, 100.0),
 };
+
+// Rapier 2D 0.21.0 at its users' settings, measured on the quick grid (full grid for tunnelling).
 constexpr BoundaryExpectation kRapierBoundaries[] = {
     // Its contacts are predictive (a prediction distance ahead of the surface, an absolute
     // length): it met every shot of the small ball, at a ball and at a wall, up to 16 radii per

@@ -26,7 +26,7 @@
 const fs = require('fs');
 const path = require('path');
 const {kickVelocities} = require('./kick');
-const {WallImpulse} = require('./walls');
+const {WallImpulse, WallContacts} = require('./walls');
 
 const BALL = 6;
 const BALLS_CATEGORY = 0x0001;
@@ -160,8 +160,7 @@ async function create() {
   let shapeBall = new Map();        // b2ShapeId.index1 → ball index, or −1 for a wall
   let walls = {};                   // side → b2ShapeId
   let wallBody = null;
-  let touchingWall = new Map();     // ball index → number of walls it touches
-  const metWall = new Set();        // balls with a wall contact beginning or ending in this step
+  const wallContacts = new WallContacts();
   let settings = {};
   let scene = null;
   let state = new Float64Array(0);  // x, y, vx, vy per ball, as Box2D has them now
@@ -244,7 +243,7 @@ async function create() {
         shapeBall.delete(walls[side].index1);
         B.b2DestroyShape(walls[side], false);
         delete walls[side];
-        touchingWall.clear();  // its end events will not come: recounted from the next begins
+        wallContacts.clear();
       }
     }
   }
@@ -252,23 +251,7 @@ async function create() {
   function onTouch(shapeA, shapeB, began) {
     const a = shapeBall.get(shapeA.index1);
     const b = shapeBall.get(shapeB.index1);
-    if (a === undefined || b === undefined) return;
-    if (a >= 0 && b >= 0) {
-      if (began) counters.ballCollisions += 1;
-      return;
-    }
-    const ball = a >= 0 ? a : b;
-    if (ball < 0) return;
-    metWall.add(ball);
-    const touching = touchingWall.get(ball) || 0;
-    if (began) {
-      counters.wallCollisions += 1;
-      touchingWall.set(ball, touching + 1);
-    } else if (touching <= 1) {
-      touchingWall.delete(ball);
-    } else {
-      touchingWall.set(ball, touching - 1);
-    }
+    if (a !== undefined && b !== undefined) wallContacts.event(a, b, began, counters);
   }
 
   function drainContactEvents() {
@@ -368,7 +351,7 @@ async function create() {
       shapes = new Array(n);
       masses = new Float64Array(n);
       shapeBall = new Map();
-      touchingWall = new Map();
+      wallContacts.clear();
       walls = {};
       const wallDef = B.b2DefaultBodyDef();
       wallBody = B.b2CreateBody(worldId, wallDef);  // static, its default type
@@ -404,7 +387,7 @@ async function create() {
     setBall(index, def) {
       shapeBall.delete(shapes[index].index1);
       B.b2DestroyShape(shapes[index], false);
-      touchingWall.delete(index);
+      wallContacts.forget(index);
       setPosition(index, def[0], def[1]);
       setVelocity(index, def[2], def[3]);
       ballShape(def, index);
@@ -426,14 +409,13 @@ async function create() {
       counters.engineSteps += 1;
       heap.read(worldId, bodies, state);
       counters.ballsBroughtBack += containBalls();
-      metWall.clear();
+      wallContacts.beginStep();
       drainContactEvents();
       const charge = (i) => {
         counters.wallImpulse += wallImpulse.charge(i, masses[i], state[4 * i + 2], state[4 * i + 3],
                                                    scene.world.gravity, dt);
       };
-      metWall.forEach(charge);
-      for (const i of touchingWall.keys()) charge(i);
+      wallContacts.forEachCharged(charge);
     },
 
     readState(out) {

@@ -23,7 +23,7 @@
 const fs = require('fs');
 const path = require('path');
 const {kickVelocities} = require('./kick');
-const {WallImpulse} = require('./walls');
+const {WallImpulse, WallContacts} = require('./walls');
 
 const VERSIONS = ['0.21.0', '0.19.3'];  // the option's choices, in the C++ side's order
 const BALL = 6;
@@ -47,8 +47,7 @@ async function create() {
   let colliderBall = new Map();  // collider handle → ball index, or −1 for a wall
   let walls = {};                // side → collider
   let wallBody = null;
-  let touchingWall = new Map();  // ball index → number of walls it touches
-  const metWall = new Set();     // balls with a wall contact beginning or ending in this step
+  const wallContacts = new WallContacts();
   let settings = {};
   let scene = null;
   let velocities = new Float64Array(0);
@@ -113,7 +112,7 @@ async function create() {
         colliderBall.delete(walls[side].handle);
         world.removeCollider(walls[side], false);
         delete walls[side];
-        touchingWall.clear();  // its stop events will not come: recounted from the next starts
+        wallContacts.clear();
       }
     }
   }
@@ -121,23 +120,7 @@ async function create() {
   function onCollision(handleA, handleB, started) {
     const a = colliderBall.get(handleA);
     const b = colliderBall.get(handleB);
-    if (a === undefined || b === undefined) return;
-    if (a >= 0 && b >= 0) {
-      if (started) counters.ballCollisions += 1;
-      return;
-    }
-    const ball = a >= 0 ? a : b;
-    if (ball < 0) return;
-    metWall.add(ball);
-    const touching = touchingWall.get(ball) || 0;
-    if (started) {
-      counters.wallCollisions += 1;
-      touchingWall.set(ball, touching + 1);
-    } else if (touching <= 1) {
-      touchingWall.delete(ball);
-    } else {
-      touchingWall.set(ball, touching - 1);
-    }
+    if (a !== undefined && b !== undefined) wallContacts.event(a, b, started, counters);
   }
 
   /// Brings back every ball whose centre is beyond a wall that is on; returns how many.
@@ -207,7 +190,7 @@ async function create() {
       bodies = new Array(n);
       masses = new Float64Array(n);
       colliderBall = new Map();
-      touchingWall = new Map();
+      wallContacts.clear();
       walls = {};
       wallBody = world.createRigidBody(R.RigidBodyDesc.fixed());
       for (let i = 0; i < n; ++i) {
@@ -237,7 +220,7 @@ async function create() {
       const old = body.collider(0);
       colliderBall.delete(old.handle);
       world.removeCollider(old, false);
-      touchingWall.delete(index);
+      wallContacts.forget(index);
       body.setTranslation({x: def[0], y: def[1]}, true);
       body.setLinvel({x: def[2], y: def[3]}, true);
       ballCollider(def, index);
@@ -257,14 +240,13 @@ async function create() {
       world.step(queue);
       counters.engineSteps += 1;
       counters.ballsBroughtBack += containBalls();
-      metWall.clear();
+      wallContacts.beginStep();
       queue.drainCollisionEvents(onCollision);
       const charge = (i) => {
         const v = bodies[i].linvel();
         counters.wallImpulse += wallImpulse.charge(i, masses[i], v.x, v.y, scene.world.gravity, dt);
       };
-      metWall.forEach(charge);
-      for (const i of touchingWall.keys()) charge(i);
+      wallContacts.forEachCharged(charge);
     },
 
     readState(out) {

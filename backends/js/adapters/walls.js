@@ -25,4 +25,52 @@ class WallImpulse {
   }
 }
 
-module.exports = {WallImpulse};
+/// Which balls touch a wall, kept from an engine's contact begin and end events (Rapier's
+/// collision events, Box2D v3's contact touch events): a contact that begins between two balls is
+/// a ball–ball collision, between a ball and a wall a wall bounce; a ball that met a wall in a
+/// step or still touches one is charged its WallImpulse at the step's end.
+class WallContacts {
+  constructor() {
+    this.touching = new Map();  // ball index → number of walls it touches
+    this.met = new Set();       // balls with a wall contact beginning or ending in this step
+  }
+
+  /// A wall was removed: its end events will not come, so touches are recounted from the next
+  /// begins.
+  clear() { this.touching.clear(); }
+
+  /// Ball `ball` was replaced (an edit): its contacts are new.
+  forget(ball) { this.touching.delete(ball); }
+
+  /// Call before the step's events.
+  beginStep() { this.met.clear(); }
+
+  /// A contact between `a` and `b` (ball indices, −1 for a wall) began or ended.
+  event(a, b, began, counters) {
+    if (a >= 0 && b >= 0) {
+      if (began) counters.ballCollisions += 1;
+      return;
+    }
+    const ball = a >= 0 ? a : b;
+    if (ball < 0) return;
+    this.met.add(ball);
+    const touching = this.touching.get(ball) || 0;
+    if (began) {
+      counters.wallCollisions += 1;
+      this.touching.set(ball, touching + 1);
+    } else if (touching <= 1) {
+      this.touching.delete(ball);
+    } else {
+      this.touching.set(ball, touching - 1);
+    }
+  }
+
+  /// Calls charge(i) for every ball that met or touches a wall in this step (WallImpulse charges a
+  /// ball once a step).
+  forEachCharged(charge) {
+    this.met.forEach(charge);
+    for (const i of this.touching.keys()) charge(i);
+  }
+}
+
+module.exports = {WallImpulse, WallContacts};
