@@ -26,7 +26,7 @@
 const fs = require('fs');
 const path = require('path');
 const {kickVelocities} = require('./kick');
-const {WallImpulse, WallContacts} = require('./walls');
+const {WallImpulse, WallContacts, wallBoxes, mirrorInside} = require('./walls');
 
 const BALL = 6;
 const BALLS_CATEGORY = 0x0001;
@@ -218,16 +218,7 @@ async function create() {
   }
 
   function syncWalls() {
-    const {width, height} = scene;
-    let largest = 0;
-    for (let i = 0; i < bodies.length; ++i) largest = Math.max(largest, scene.balls[BALL * i + 4]);
-    const t = Math.max(1, 4 * largest);  // m: thick, so a fast ball's step ends inside it
-    const boxes = {
-      left: [-t / 2, height / 2, t / 2, height / 2 + t],
-      right: [width + t / 2, height / 2, t / 2, height / 2 + t],
-      bottom: [width / 2, -t / 2, width / 2 + t, t / 2],
-      top: [width / 2, height + t / 2, width / 2 + t, t / 2],
-    };
+    const boxes = wallBoxes(scene.width, scene.height, scene.balls);
     for (const side of Object.keys(boxes)) {
       const on = scene.world.walls[side];
       if (on && !walls[side]) {
@@ -299,21 +290,14 @@ async function create() {
 
   /// Brings back every ball whose centre is beyond a wall that is on; returns how many.
   function containBalls() {
-    const {width, height} = scene;
-    const on = scene.world.walls;
     let brought = 0;
     for (let i = 0; i < bodies.length; ++i) {
-      const px = state[4 * i];
-      const py = state[4 * i + 1];
-      let [x, y, vx, vy] = [px, py, state[4 * i + 2], state[4 * i + 3]];
-      if (on.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
-      if (on.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
-      if (on.bottom && y < 0) [y, vy] = [-y, Math.abs(vy)];
-      if (on.top && y > height) [y, vy] = [2 * height - y, -Math.abs(vy)];
-      if (x === px && y === py) continue;
-      setPosition(i, x, y);
-      setVelocity(i, vx, vy);
-      keep(i, x, y, vx, vy);
+      const back = mirrorInside(state[4 * i], state[4 * i + 1], state[4 * i + 2],
+                                state[4 * i + 3], scene.width, scene.height, scene.world.walls);
+      if (!back) continue;
+      setPosition(i, back[0], back[1]);
+      setVelocity(i, back[2], back[3]);
+      keep(i, ...back);
       ++brought;
     }
     return brought;

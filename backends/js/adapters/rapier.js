@@ -23,7 +23,7 @@
 const fs = require('fs');
 const path = require('path');
 const {kickVelocities} = require('./kick');
-const {WallImpulse, WallContacts} = require('./walls');
+const {WallImpulse, WallContacts, wallBoxes, mirrorInside} = require('./walls');
 
 const VERSIONS = ['0.21.0', '0.19.3'];  // the option's choices, in the C++ side's order
 const BALL = 6;
@@ -85,16 +85,7 @@ async function create() {
   }
 
   function syncWalls() {
-    const {width, height} = scene;
-    let largest = 0;
-    for (let i = 0; i < bodies.length; ++i) largest = Math.max(largest, scene.balls[BALL * i + 4]);
-    const t = Math.max(1, 4 * largest);  // m: thick, so a fast ball's step ends inside it
-    const shapes = {
-      left: [-t / 2, height / 2, t / 2, height / 2 + t],
-      right: [width + t / 2, height / 2, t / 2, height / 2 + t],
-      bottom: [width / 2, -t / 2, width / 2 + t, t / 2],
-      top: [width / 2, height + t / 2, width / 2 + t, t / 2],
-    };
+    const shapes = wallBoxes(scene.width, scene.height, scene.balls);
     for (const side of Object.keys(shapes)) {
       const on = scene.world.walls[side];
       if (on && !walls[side]) {
@@ -125,21 +116,14 @@ async function create() {
 
   /// Brings back every ball whose centre is beyond a wall that is on; returns how many.
   function containBalls() {
-    const {width, height} = scene;
-    const on = scene.world.walls;
     let brought = 0;
     for (const body of bodies) {
       const p = body.translation();
-      let {x, y} = p;
       const v = body.linvel();
-      let {x: vx, y: vy} = v;
-      if (on.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
-      if (on.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
-      if (on.bottom && y < 0) [y, vy] = [-y, Math.abs(vy)];
-      if (on.top && y > height) [y, vy] = [2 * height - y, -Math.abs(vy)];
-      if (x === p.x && y === p.y) continue;
-      body.setTranslation({x, y}, true);
-      body.setLinvel({x: vx, y: vy}, true);
+      const back = mirrorInside(p.x, p.y, v.x, v.y, scene.width, scene.height, scene.world.walls);
+      if (!back) continue;
+      body.setTranslation({x: back[0], y: back[1]}, true);
+      body.setLinvel({x: back[2], y: back[3]}, true);
       ++brought;
     }
     return brought;

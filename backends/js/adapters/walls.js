@@ -73,4 +73,30 @@ class WallContacts {
   }
 }
 
-module.exports = {WallImpulse, WallContacts};
+/// The walls of a box [0, width] × [0, height] (y up) as boxes outside it, side → [centre x,
+/// centre y, half width, half height] in m: thick (1 m, or 4 of the largest radii of the scene's
+/// `balls`, 6 doubles each, radius 5th), so a fast ball's step ends inside one.
+function wallBoxes(width, height, balls) {
+  let largest = 0;
+  for (let i = 4; i < balls.length; i += 6) largest = Math.max(largest, balls[i]);
+  const t = Math.max(1, 4 * largest);
+  return {
+    left: [-t / 2, height / 2, t / 2, height / 2 + t],
+    right: [width + t / 2, height / 2, t / 2, height / 2 + t],
+    bottom: [width / 2, -t / 2, width / 2 + t, t / 2],
+    top: [width / 2, height + t / 2, width / 2 + t, t / 2],
+  };
+}
+
+/// A ball whose centre (x, y) has passed a wall that is on (`on`: side → bool), mirrored back
+/// inside with its normal speed reversed: [x, y, vx, vy], or null when it is inside (y up).
+function mirrorInside(x, y, vx, vy, width, height, on) {
+  const [x0, y0] = [x, y];
+  if (on.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
+  if (on.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
+  if (on.bottom && y < 0) [y, vy] = [-y, Math.abs(vy)];
+  if (on.top && y > height) [y, vy] = [2 * height - y, -Math.abs(vy)];
+  return x === x0 && y === y0 ? null : [x, y, vx, vy];
+}
+
+module.exports = {WallImpulse, WallContacts, wallBoxes, mirrorInside};
