@@ -168,18 +168,15 @@ async function create() {
   let wallImpulse = new WallImpulse(0);
   let counters = null;
 
-  function material() {
-    const m = B.b2DefaultSurfaceMaterial();
-    m.restitution = 1;
-    m.friction = 0;
-    return m;
-  }
-
   function shapeDef(category, mask) {
     const def = B.b2DefaultShapeDef();
-    def.material = material();
+    const material = B.b2DefaultSurfaceMaterial();
+    material.restitution = 1;
+    material.friction = 0;
+    def.material = material;  // a copy: the returned one is ours to delete
+    material.delete();
     def.enableContactEvents = true;
-    const filter = def.filter;
+    const filter = def.filter;  // a reference into def (the binding's), not a copy
     filter.categoryBits = category;
     filter.maskBits = mask;
     def.filter = filter;
