@@ -4,6 +4,7 @@
 #include <string>
 
 #include "box2d/box2d_backend.h"
+#include "box2d3/box2d3_backend.h"
 #include "bullet/bullet_backend.h"
 #include "chipmunk/chipmunk_backend.h"
 #include "elastic/elastic_backend.h"
@@ -33,6 +34,9 @@ constexpr BackendInfo kBackends[] = {
     {"rapier",
      "Rapier 2D 0.21.0 or 0.19.3 (WebAssembly, in Node.js), restitution 1, as its users set it up",
      &makeRapierBackend, kRapierLimits, &rapierUnavailable, "WebAssembly"},
+    {"box2d3",
+     "Box2D v3 (box2d3-wasm 5.2.0: WebAssembly, in Node.js), restitution 1, as its users set it up",
+     &makeBox2d3Backend, kBox2d3Limits, &box2d3Unavailable, "WebAssembly"},
 };
 
 }  // namespace

@@ -23,7 +23,7 @@
 const fs = require('fs');
 const path = require('path');
 const {kickVelocities} = require('./kick');
-const {WallImpulse} = require('./walls');
+const {WallImpulse, WallContacts, wallBoxes, mirrorInside} = require('./walls');
 
 const VERSIONS = ['0.21.0', '0.19.3'];  // the option's choices, in the C++ side's order
 const BALL = 6;
@@ -47,8 +47,7 @@ async function create() {
   let colliderBall = new Map();  // collider handle → ball index, or −1 for a wall
   let walls = {};                // side → collider
   let wallBody = null;
-  let touchingWall = new Map();  // ball index → number of walls it touches
-  const metWall = new Set();     // balls with a wall contact beginning or ending in this step
+  const wallContacts = new WallContacts();
   let settings = {};
   let scene = null;
   let velocities = new Float64Array(0);
@@ -86,16 +85,7 @@ async function create() {
   }
 
   function syncWalls() {
-    const {width, height} = scene;
-    let largest = 0;
-    for (let i = 0; i < bodies.length; ++i) largest = Math.max(largest, scene.balls[BALL * i + 4]);
-    const t = Math.max(1, 4 * largest);  // m: thick, so a fast ball's step ends inside it
-    const shapes = {
-      left: [-t / 2, height / 2, t / 2, height / 2 + t],
-      right: [width + t / 2, height / 2, t / 2, height / 2 + t],
-      bottom: [width / 2, -t / 2, width / 2 + t, t / 2],
-      top: [width / 2, height + t / 2, width / 2 + t, t / 2],
-    };
+    const shapes = wallBoxes(scene.width, scene.height, scene.balls);
     for (const side of Object.keys(shapes)) {
       const on = scene.world.walls[side];
       if (on && !walls[side]) {
@@ -113,7 +103,7 @@ async function create() {
         colliderBall.delete(walls[side].handle);
         world.removeCollider(walls[side], false);
         delete walls[side];
-        touchingWall.clear();  // its stop events will not come: recounted from the next starts
+        wallContacts.clear();
       }
     }
   }
@@ -121,42 +111,19 @@ async function create() {
   function onCollision(handleA, handleB, started) {
     const a = colliderBall.get(handleA);
     const b = colliderBall.get(handleB);
-    if (a === undefined || b === undefined) return;
-    if (a >= 0 && b >= 0) {
-      if (started) counters.ballCollisions += 1;
-      return;
-    }
-    const ball = a >= 0 ? a : b;
-    if (ball < 0) return;
-    metWall.add(ball);
-    const touching = touchingWall.get(ball) || 0;
-    if (started) {
-      counters.wallCollisions += 1;
-      touchingWall.set(ball, touching + 1);
-    } else if (touching <= 1) {
-      touchingWall.delete(ball);
-    } else {
-      touchingWall.set(ball, touching - 1);
-    }
+    if (a !== undefined && b !== undefined) wallContacts.event(a, b, started, counters);
   }
 
   /// Brings back every ball whose centre is beyond a wall that is on; returns how many.
   function containBalls() {
-    const {width, height} = scene;
-    const on = scene.world.walls;
     let brought = 0;
     for (const body of bodies) {
       const p = body.translation();
-      let {x, y} = p;
       const v = body.linvel();
-      let {x: vx, y: vy} = v;
-      if (on.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
-      if (on.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
-      if (on.bottom && y < 0) [y, vy] = [-y, Math.abs(vy)];
-      if (on.top && y > height) [y, vy] = [2 * height - y, -Math.abs(vy)];
-      if (x === p.x && y === p.y) continue;
-      body.setTranslation({x, y}, true);
-      body.setLinvel({x: vx, y: vy}, true);
+      const back = mirrorInside(p.x, p.y, v.x, v.y, scene.width, scene.height, scene.world.walls);
+      if (!back) continue;
+      body.setTranslation({x: back[0], y: back[1]}, true);
+      body.setLinvel({x: back[2], y: back[3]}, true);
       ++brought;
     }
     return brought;
@@ -207,7 +174,7 @@ async function create() {
       bodies = new Array(n);
       masses = new Float64Array(n);
       colliderBall = new Map();
-      touchingWall = new Map();
+      wallContacts.clear();
       walls = {};
       wallBody = world.createRigidBody(R.RigidBodyDesc.fixed());
       for (let i = 0; i < n; ++i) {
@@ -237,7 +204,7 @@ async function create() {
       const old = body.collider(0);
       colliderBall.delete(old.handle);
       world.removeCollider(old, false);
-      touchingWall.delete(index);
+      wallContacts.forget(index);
       body.setTranslation({x: def[0], y: def[1]}, true);
       body.setLinvel({x: def[2], y: def[3]}, true);
       ballCollider(def, index);
@@ -257,14 +224,13 @@ async function create() {
       world.step(queue);
       counters.engineSteps += 1;
       counters.ballsBroughtBack += containBalls();
-      metWall.clear();
+      wallContacts.beginStep();
       queue.drainCollisionEvents(onCollision);
       const charge = (i) => {
         const v = bodies[i].linvel();
         counters.wallImpulse += wallImpulse.charge(i, masses[i], v.x, v.y, scene.world.gravity, dt);
       };
-      metWall.forEach(charge);
-      for (const i of touchingWall.keys()) charge(i);
+      wallContacts.forEachCharged(charge);
     },
 
     readState(out) {

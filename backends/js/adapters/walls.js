@@ -25,4 +25,78 @@ class WallImpulse {
   }
 }
 
-module.exports = {WallImpulse};
+/// Which balls touch a wall, kept from an engine's contact begin and end events (Rapier's
+/// collision events, Box2D v3's contact touch events): a contact that begins between two balls is
+/// a ball–ball collision, between a ball and a wall a wall bounce; a ball that met a wall in a
+/// step or still touches one is charged its WallImpulse at the step's end.
+class WallContacts {
+  constructor() {
+    this.touching = new Map();  // ball index → number of walls it touches
+    this.met = new Set();       // balls with a wall contact beginning or ending in this step
+  }
+
+  /// A wall was removed: its end events will not come, so touches are recounted from the next
+  /// begins.
+  clear() { this.touching.clear(); }
+
+  /// Ball `ball` was replaced (an edit): its contacts are new.
+  forget(ball) { this.touching.delete(ball); }
+
+  /// Call before the step's events.
+  beginStep() { this.met.clear(); }
+
+  /// A contact between `a` and `b` (ball indices, −1 for a wall) began or ended.
+  event(a, b, began, counters) {
+    if (a >= 0 && b >= 0) {
+      if (began) counters.ballCollisions += 1;
+      return;
+    }
+    const ball = a >= 0 ? a : b;
+    if (ball < 0) return;
+    this.met.add(ball);
+    const touching = this.touching.get(ball) || 0;
+    if (began) {
+      counters.wallCollisions += 1;
+      this.touching.set(ball, touching + 1);
+    } else if (touching <= 1) {
+      this.touching.delete(ball);
+    } else {
+      this.touching.set(ball, touching - 1);
+    }
+  }
+
+  /// Calls charge(i) for every ball that met or touches a wall in this step (WallImpulse charges a
+  /// ball once a step).
+  forEachCharged(charge) {
+    this.met.forEach(charge);
+    for (const i of this.touching.keys()) charge(i);
+  }
+}
+
+/// The walls of a box [0, width] × [0, height] (y up) as boxes outside it, side → [centre x,
+/// centre y, half width, half height] in m: thick (1 m, or 4 of the largest radii of the scene's
+/// `balls`, 6 doubles each, radius 5th), so a fast ball's step ends inside one.
+function wallBoxes(width, height, balls) {
+  let largest = 0;
+  for (let i = 4; i < balls.length; i += 6) largest = Math.max(largest, balls[i]);
+  const t = Math.max(1, 4 * largest);
+  return {
+    left: [-t / 2, height / 2, t / 2, height / 2 + t],
+    right: [width + t / 2, height / 2, t / 2, height / 2 + t],
+    bottom: [width / 2, -t / 2, width / 2 + t, t / 2],
+    top: [width / 2, height + t / 2, width / 2 + t, t / 2],
+  };
+}
+
+/// A ball whose centre (x, y) has passed a wall that is on (`on`: side → bool), mirrored back
+/// inside with its normal speed reversed: [x, y, vx, vy], or null when it is inside (y up).
+function mirrorInside(x, y, vx, vy, width, height, on) {
+  const [x0, y0] = [x, y];
+  if (on.left && x < 0) [x, vx] = [-x, Math.abs(vx)];
+  if (on.right && x > width) [x, vx] = [2 * width - x, -Math.abs(vx)];
+  if (on.bottom && y < 0) [y, vy] = [-y, Math.abs(vy)];
+  if (on.top && y > height) [y, vy] = [2 * height - y, -Math.abs(vy)];
+  return x === x0 && y === y0 ? null : [x, y, vx, vy];
+}
+
+module.exports = {WallImpulse, WallContacts, wallBoxes, mirrorInside};
