@@ -1,6 +1,7 @@
 #include "backend_options_form.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -73,7 +74,16 @@ void BackendOptionsForm::showOptions(const Backend& backend) {
     const QString description = QString::fromStdString(spec.description);
     const double value = backend.options().value(spec.name);
     QWidget* field = nullptr;
-    if (spec.integer && spec.min == 0.0 && spec.max == 1.0) {
+    if (!spec.choices.empty()) {
+      // Named values (an engine's releases): the value is the chosen one's index.
+      auto* box = new QComboBox;
+      for (const std::string& choice : spec.choices)
+        box->addItem(QString::fromStdString(choice));
+      box->setCurrentIndex(toInt(value));
+      connect(box, &QComboBox::currentIndexChanged, this,
+              [this, name](int chosen) { emit optionChanged(name, chosen); });
+      field = box;
+    } else if (spec.integer && spec.min == 0.0 && spec.max == 1.0) {
       auto* box = new QCheckBox;
       box->setChecked(value != 0.0);
       connect(box, &QCheckBox::toggled, this,

@@ -10,8 +10,9 @@ class Backend;
 
 namespace fooball::gui {
 
-/// The options of one backend as a form, generated from its OptionSpecs: a check box for 0/1
-/// options, a spin box for other whole numbers, a double spin box otherwise. Each field shows
+/// The options of one backend as a form, generated from its OptionSpecs: a drop-down list for
+/// named values (OptionSpec::choices), a check box for 0/1 options, a spin box for other whole
+/// numbers, a double spin box otherwise. Each field shows
 /// the option's description as its tooltip.
 class BackendOptionsForm : public QWidget {
   Q_OBJECT

@@ -361,6 +361,22 @@ TEST_F(CompareMode, OptionsReadAsWordsAndShowTinyValuesAndWholeNumbersExactly) {
   EXPECT_EQ(markers.back(), QStringLiteral("velocity_iterations = 12"));
 }
 
+TEST_F(CompareMode, AnOptionWithNamedValuesIsADropDownOfThemAndSetsTheRunsEngine) {
+  // Rapier's releases: the form lists them by name; choosing one sets that run's option.
+  open(fooball::testing::gas(30), "elastic", {"rapier"});
+  auto* version =
+      runList()->optionsForm(1)->findChild<QComboBox*>(QStringLiteral("option_version"));
+  ASSERT_NE(version, nullptr);
+  ASSERT_EQ(version->count(), 2);
+  EXPECT_EQ(version->itemText(0), QStringLiteral("0.21.0"));
+  EXPECT_EQ(version->itemText(1), QStringLiteral("0.19.3"));
+  EXPECT_EQ(version->currentIndex(), 0);
+  version->setCurrentIndex(1);
+  EXPECT_EQ(runs().run(1).backend().options().value("version"), 1.0);
+  frames(3);
+  EXPECT_GT(group().time(), 0.0) << "the run steps on the other release";
+}
+
 TEST_F(CompareMode, FourRunsOverlayEveryChartAndSideBySideGivesEachRunATile) {
   open(fooball::testing::gas(60));
   addRun(QStringLiteral("exact"));
