@@ -4,11 +4,11 @@
 #include <span>
 #include <vector>
 
-#include "exact/axis.h"
-#include "exact/ball_motion.h"
-#include "exact/event.h"
-#include "exact/event_calendar.h"
-#include "exact/event_cells.h"
+#include "axis.h"
+#include "ball_motion.h"
+#include "event.h"
+#include "event_calendar.h"
+#include "event_cells.h"
 #include "fooball/backend.h"
 #include "fooball/scene.h"
 

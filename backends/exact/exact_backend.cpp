@@ -3,7 +3,7 @@
 #include <string>
 #include <utility>
 
-#include "exact/event_driven_world.h"
+#include "event_driven_world.h"
 
 namespace fooball {
 
