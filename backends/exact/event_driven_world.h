@@ -14,7 +14,7 @@
 
 namespace fooball::exact {
 
-/// Guards against event explosions; both are backend options (exact_backend.cpp).
+/// Guards against event explosions; both are backend options (exact_options.cpp).
 struct EventLimits {
   /// s. A wall bounce under gravity whose flight back would last less than this leaves the ball
   /// resting on the wall: its normal speed (at most g·t/2) is dropped and the wall carries
