@@ -871,6 +871,44 @@ TEST_F(CliTest, SaveRecordsTheBackendEveryOptionAndTheTime) {
   EXPECT_EQ(scene.savedFrom->options.at("substeps"), 3.0);
 }
 
+TEST_F(CliTest, RunBackendTakesARunSpecThatSubstepsAndOptionEdit) {
+  const std::string name = backendWithSubsteps();
+  ASSERT_FALSE(name.empty()) << "no registered backend has substeps";
+  // The substeps a run saves with, given `flags` after --backend.
+  const auto savedSubsteps = [&](const std::string& spec, std::vector<std::string> flags) {
+    const fs::path saved = pathOf("spec.json");
+    std::vector<std::string> arguments{
+        "run", "--scene", twoBallsScene().string(), "--backend", spec, "--duration",
+        "0.1", "--save",  saved.string(),           "--quiet"};
+    arguments.insert(arguments.end(), flags.begin(), flags.end());
+    const CliResult result = runCli(arguments);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    const fooball::Scene scene = fooball::loadSceneFile(saved);
+    EXPECT_EQ(scene.savedFrom->backend, name) << "the spec's name, not the spec";
+    return scene.savedFrom->options.at("substeps");
+  };
+  EXPECT_EQ(savedSubsteps(name + ":substeps=5", {}), 5.0);
+  // The shorthand edits the spec: applied after it, the last one wins.
+  EXPECT_EQ(savedSubsteps(name + ":substeps=5", {"--substeps", "3"}), 3.0);
+  EXPECT_EQ(savedSubsteps(name + ":substeps=5", {"--substeps", "3", "--option", "substeps=7"}),
+            7.0);
+  const CliResult summary = runCli({"run", "--scene", twoBallsScene().string(), "--backend",
+                                    name + ":substeps=6", "--duration", "0.1"});
+  ASSERT_EQ(summary.exitCode, 0) << summary.err;
+  EXPECT_THAT(summary.out, ContainsRegex("backend: +" + name + " \\(substeps=6\\)\n"));
+}
+
+TEST_F(CliTest, BadRunBackendSpecExitsTwoNamingTheFlagAndTheProblem) {
+  EXPECT_THAT(expectBadInput({"run", "--backend", "elastic:substeps"}),
+              AllOf(HasSubstr("--backend"), HasSubstr("elastic:substeps")));
+  EXPECT_THAT(expectBadInput({"run", "--backend", "elastic:warp=1"}),
+              AllOf(HasSubstr("--backend"), HasSubstr("warp")));
+  EXPECT_THAT(expectBadInput({"run", "--backend", "elastic:substeps=0"}),
+              AllOf(HasSubstr("--backend"), HasSubstr("substeps")));
+  const std::string unknown = expectBadInput({"run", "--backend", "warp-drive:substeps=2"});
+  EXPECT_THAT(unknown, AllOf(HasSubstr("warp-drive"), HasSubstr("elastic")));
+}
+
 /// Every registered backend's state of the rain preset after `seconds`, saved by `run --save`.
 TEST_F(CliTest, EveryBackendsSavedStateReopensOnEveryBackendAndWritesBackByteForByte) {
   for (const fooball::BackendInfo& from : fooball::registeredBackends()) {
