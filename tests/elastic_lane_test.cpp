@@ -12,8 +12,8 @@
 #include <random>
 #include <vector>
 
+#include "common/cell_lists.h"
 #include "elastic/balls.h"
-#include "elastic/cell_lists.h"
 #include "elastic/pair_collisions.h"
 
 namespace fooball::elastic {
@@ -50,14 +50,14 @@ std::vector<Ball> denseBalls(std::uint64_t seed, bool withNaN) {
 }
 
 /// The grid collideRows searches, built on the balls' centres with one worker.
-CellLists cellsFor(const std::vector<Ball>& balls) {
-  CellLists cells;
+common::CellLists cellsFor(const std::vector<Ball>& balls) {
+  common::CellLists cells;
   cells.layout(balls.size(), kWidth, kHeight, 2.0 * kMaxRadius, 1);
   for (std::size_t slot = 0; slot < balls.size(); ++slot)
     cells.setCell(slot, cells.cellOf(balls[slot].x, balls[slot].y, balls[slot].radius,
-                                     CellOrder::FromLowerLeft));
+                                     common::CellOrder::FromLowerLeft));
   cells.countShare(0);
-  cells.sortShare(0, CellOrder::FromLowerLeft);
+  cells.sortShare(0, common::CellOrder::FromLowerLeft);
   return cells;
 }
 
@@ -87,7 +87,7 @@ struct Searched {
 
 Searched searchWithBoth(const std::vector<Ball>& balls) {
   Searched searched{balls, balls};
-  const CellLists cells = cellsFor(balls);
+  const common::CellLists cells = cellsFor(balls);
   NeighbourSlots scratch;
   searched.scalarImpulses =
       collideRows(searched.scalar, cells, 0, cells.rows(), scratch, LaneTest::Scalar);

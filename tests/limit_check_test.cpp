@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -117,16 +118,17 @@ TEST(LimitCheck, AFastShooterCrossesTheTunnellingLimitOnElasticNotOnExact) {
 
 TEST(LimitCheck, ALargeEnergyErrorIsNamedWhateverTheCause) {
   LimitNumbers numbers;
-  numbers.energyScale = 100.0;  // J
-  numbers.energyResidual = -9.0;
+  numbers.relativeEnergyError = -0.09;
   EXPECT_TRUE(crossedLimits(numbers, MethodLimits{}).empty()) << "9% is within 10%";
-  numbers.energyResidual = -12.0;
+  numbers.relativeEnergyError = -0.12;
   const auto crossed = crossedLimits(numbers, MethodLimits{});
   ASSERT_EQ(crossed.size(), 1u);
   EXPECT_EQ(crossed[0].limit, MethodLimit::EnergyError);
   EXPECT_DOUBLE_EQ(crossed[0].value, 0.12);
-  numbers = {};
-  EXPECT_TRUE(crossedLimits(numbers, MethodLimits{}).empty()) << "no energy, no share of it";
+  numbers.relativeEnergyError = 0.12;
+  EXPECT_EQ(crossedLimits(numbers, MethodLimits{}).size(), 1u) << "a gain counts as a loss";
+  numbers.relativeEnergyError = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(crossedLimits(numbers, MethodLimits{}).empty()) << "no E(0), no share of it";
 }
 
 TEST(LimitCheck, PackingIsTheCoveredShareOfTheBox) {

@@ -51,6 +51,19 @@ TEST(Metrics, PotentialEnergyIsZeroAtTheFloorAndWithoutGravity) {
       << "higher is more potential energy under downward gravity";
 }
 
+TEST(Metrics, RelativeEnergyErrorIsTheResidualOverTheMagnitudeOfTheInitialEnergy) {
+  EXPECT_EQ(relativeEnergyError(-0.5, 8.0), -0.0625);
+  EXPECT_EQ(relativeEnergyError(0.25, -2.0), 0.125) << "|E(0)|: the sign is the residual's";
+  EXPECT_EQ(relativeEnergyError(0.0, 3.0), 0.0);
+  EXPECT_DOUBLE_EQ(relativeEnergyError(1e-30, 1e-20), 1e-10) << "no floor: a tiny E(0) is honest";
+  EXPECT_TRUE(std::isnan(relativeEnergyError(1.0, 0.0))) << "nothing to be relative to";
+  EXPECT_TRUE(std::isnan(relativeEnergyError(1.0, std::numeric_limits<double>::infinity())));
+  Metrics metrics;
+  metrics.energyResidual = 3.0;
+  metrics.initialEnergy = -12.0;
+  EXPECT_EQ(relativeEnergyError(metrics), 0.25);
+}
+
 TEST(Metrics, SumStateOfNoBallsIsZero) {
   const StateSums sums = sumState({}, {}, {}, {0.0, -9.81});
   EXPECT_EQ(sums.kineticEnergy, 0.0);

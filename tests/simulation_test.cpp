@@ -210,6 +210,29 @@ TEST(Simulation, LoadResetsTimeCountersAndTheEnergyBudget) {
   EXPECT_EQ(fresh.sums.totalEnergy(), totalEnergyOf(scene));
 }
 
+TEST(Simulation, MetricsCarryTheInitialEnergyTheRelativeErrorDividesBy) {
+  // One 2 kg ball at 3 m/s, 1.5 m up under g = 10 m/s²: E(0) = ½·2·3² + 2·10·1.5 = 9 + 30 J.
+  Scene scene = emptyBox();
+  scene.world.gravity = {0.0, -10.0};
+  scene.balls = {ball({4.0, 1.5}, {3.0, 0.0}, 0.5, 2.0)};
+  Simulation simulation = elasticSimulation(scene);
+  EXPECT_EQ(simulation.metrics().initialEnergy, 39.0);
+  simulation.run(0.5);
+  // An edit is work, booked as such: E(0) stays what the run began with.
+  BallDef faster = simulation.scene().balls[0];
+  faster.velocity = {5.0, 1.0};
+  simulation.setBall(0, faster);
+  simulation.run(0.5);
+  const Metrics metrics = simulation.metrics();
+  EXPECT_EQ(metrics.initialEnergy, 39.0);
+  EXPECT_EQ(relativeEnergyError(metrics), metrics.energyResidual / 39.0);
+  // A restart begins a new budget, from the energy then.
+  const Scene now = simulation.scene();
+  simulation.load(now, simulation.time());
+  EXPECT_EQ(simulation.metrics().initialEnergy, simulation.metrics().sums.totalEnergy());
+  EXPECT_NE(simulation.metrics().initialEnergy, 39.0);
+}
+
 TEST(Simulation, LoadAtAStartTimeKeepsTheClockGoingAndStartsTheRestAgain) {
   // A run group that restarts its runs identical mid-run (synchronise) loads them at its time.
   Simulation simulation = elasticSimulation(threeBalls());

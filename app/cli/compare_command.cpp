@@ -120,7 +120,9 @@ class Recorder {
       plots::CompareCurve& curve = curves_[i];
       curve.times.push_back(simulation(i).time());
       curve.rmsDivergence.push_back(divergence(i).rmsPositionDifference);
-      curve.energyResidual.push_back(simulation(i).metrics().energyResidual);
+      const Metrics metrics = simulation(i).metrics();
+      curve.energyResidual.push_back(metrics.energyResidual);
+      curve.initialEnergy = metrics.initialEnergy;
     }
   }
 
@@ -211,7 +213,6 @@ void compareCommand(const CompareOptions& options, std::ostream& out) {
                   " balls, dt " + readableText(summary.dt, 4) + " s)";
     chart.duration = group.time();
     chart.departThreshold = departThreshold;
-    chart.energyScale = std::abs(summary.runs.front().start.sums.totalEnergy());
     chart.curves = std::move(recorder.curves());
     plots::saveCompareChart(chart, *options.chartPath);
   }

@@ -17,6 +17,12 @@ std::string changeText(double change, double scale, const std::string& unit) {
   return readableText(change, 3) + " " + unit;
 }
 
+/// The relative energy error (fooball/metrics.h), or "-" where E(0) is 0.
+std::string energyErrorText(const Metrics& metrics) {
+  const double error = relativeEnergyError(metrics);
+  return std::isnan(error) ? "-" : readableText(error, 3);
+}
+
 std::string stepsPerSecondText(std::uint64_t steps, double seconds) {
   if (!(seconds > 0.0)) return "-";
   return std::to_string(std::llround(static_cast<double>(steps) / seconds));
@@ -34,12 +40,14 @@ void printCompareSummary(const CompareSummary& summary, std::ostream& out) {
       << " s to t = " << readableText(reference.end.time)
       << " s, every run from the same state in lockstep.\n"
       << "Divergence: RMS distance from run 0 (" << reference.label
-      << ") over balls of the same index. Energy change relative to |E(0)|, momentum change "
+      << ") over balls of the same index. Energy change relative to |E(0)|; energy error: the "
+         "energy "
+         "budget's residual (the method's own error) relative to |E(0)|; momentum change "
          "relative to max(|P(0)|, sum m|v|).\n\n";
 
   TextTable table;
-  table.addRow(
-      {"run", "steps/s", "energy change", "momentum change", "RMS divergence (m)", "departs at"});
+  table.addRow({"run", "steps/s", "energy change", "energy error", "momentum change",
+                "RMS divergence (m)", "departs at"});
   for (std::size_t i = 0; i < summary.runs.size(); ++i) {
     const ComparedRun& run = summary.runs[i];
     const double startEnergy = run.start.sums.totalEnergy();
@@ -50,7 +58,7 @@ void printCompareSummary(const CompareSummary& summary, std::ostream& out) {
     const std::string departs =
         i == 0 ? "reference" : (run.departedAt ? readableText(*run.departedAt, 4) + " s" : "never");
     table.addRow({run.label, stepsPerSecondText(summary.steps, run.steppingSeconds),
-                  changeText(energyChange, std::abs(startEnergy), "J"),
+                  changeText(energyChange, std::abs(startEnergy), "J"), energyErrorText(run.end),
                   changeText(momentumChange, momentumScale, "N s"),
                   i == 0 ? "0" : readableText(run.rmsDivergence, 3), departs});
   }

@@ -50,8 +50,10 @@ void addRunFlags(CLI::App& run, RunOptions& options, RunFlags& flags) {
       ->type_name("NAME")
       ->capture_default_str()
       ->excludes(flags.sceneFlag);
-  run.add_option("--backend", options.backendName, "physics backend (see 'list')")
-      ->type_name("NAME")
+  run.add_option("--backend", options.backendSpec,
+                 "physics backend and its options, a run spec: NAME[:KEY=VALUE[,KEY=VALUE]...] "
+                 "(see 'list')")
+      ->type_name("SPEC")
       ->capture_default_str();
   run.add_option("--duration", options.duration,
                  "simulated time to run, in seconds (0: load and check the scene, step nothing, "

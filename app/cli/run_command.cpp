@@ -86,6 +86,7 @@ void runCommand(const RunOptions& options, std::ostream& out) {
   // (Box2D's state is float).
   const bool stepsNothing = options.duration == 0.0;
   checkRunNumbers(options, true);
+  const std::string backendName = backendSpec(options).backend;
   std::unique_ptr<Backend> backend = configuredBackend(options);
   const Scene scene = loadRunScene(options, std::cerr);
 
@@ -100,7 +101,7 @@ void runCommand(const RunOptions& options, std::ostream& out) {
   RunSummary summary;
   summary.sceneName = scene.name;
   summary.sceneSource = sceneSource(options);
-  summary.backendName = options.backendName;
+  summary.backendName = backendName;
   summary.changedOptions = changedOptions(simulation.backend());
   summary.balls = simulation.ballCount();
   summary.steps = steps;
@@ -116,10 +117,9 @@ void runCommand(const RunOptions& options, std::ostream& out) {
 
   if (csv) csv->close();
   if (options.savePath) {
-    saveSceneFile(stepsNothing ? scene : simulation.savedScene(options.backendName),
-                  *options.savePath);
+    saveSceneFile(stepsNothing ? scene : simulation.savedScene(backendName), *options.savePath);
   }
-  printRunWarnings(simulation, options.backendName, {}, std::cerr);
+  printRunWarnings(simulation, backendName, {}, std::cerr);
   if (options.quiet) return;
 
   summary.wallSeconds = timing.wallSeconds;

@@ -21,11 +21,13 @@ inline constexpr std::uint64_t kMaxRunSteps = 1'000'000'000;
 struct RunOptions {
   std::optional<std::filesystem::path> scenePath;  ///< --scene; the preset when absent
   std::string presetName{kDefaultPreset};
-  std::string backendName{kDefaultBackend};
-  double duration = 10.0;                ///< s of simulated time
-  std::optional<double> dt;              ///< s; the Simulation's default when absent
-  std::optional<std::string> substeps;   ///< --substeps N, the same as --option substeps=N
-  std::vector<std::string> assignments;  ///< --option KEY=VALUE, applied in order
+  /// --backend, a run spec (fooball/run_spec.h): NAME[:KEY=VALUE[,KEY=VALUE]...].
+  std::string backendSpec{kDefaultBackend};
+  double duration = 10.0;    ///< s of simulated time
+  std::optional<double> dt;  ///< s; the Simulation's default when absent
+  /// --substeps N: sets the backend's substeps option after the spec's assignments.
+  std::optional<std::string> substeps;
+  std::vector<std::string> assignments;  ///< --option KEY=VALUE, applied in order after those
   std::optional<std::filesystem::path> metricsPath;
   std::int64_t every = 1;  ///< steps between metrics rows
   std::optional<std::filesystem::path> savePath;

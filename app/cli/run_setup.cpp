@@ -30,12 +30,12 @@ std::string optionNamesText(const Backend& backend) {
 }
 
 /// Applies "KEY=VALUE", adding which flag and backend it came from to the option's own message.
-void applyOption(Backend& backend, const RunOptions& options, const std::string& flagText,
+void applyOption(Backend& backend, const std::string& backendName, const std::string& flagText,
                  const std::string& assignment) {
   try {
     backend.setOptionFromText(assignment);
   } catch (const std::invalid_argument& error) {
-    throw UsageError(flagText + ": backend '" + options.backendName + "': " + error.what());
+    throw UsageError(flagText + ": backend '" + backendName + "': " + error.what());
   }
 }
 
@@ -65,19 +65,31 @@ std::uint64_t stepCount(double duration, double dt) {
   return static_cast<std::uint64_t>(steps);
 }
 
+RunSpec backendSpec(const RunOptions& options) {
+  try {
+    return parseRunSpec(options.backendSpec);
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(std::string("--backend: ") + error.what());
+  }
+}
+
 std::unique_ptr<Backend> configuredBackend(const RunOptions& options) {
-  std::unique_ptr<Backend> backend = createBackend(options.backendName);
+  const RunSpec spec = backendSpec(options);
+  std::unique_ptr<Backend> backend = createBackend(spec.backend);
+  for (const std::string& assignment : spec.assignments) {
+    applyOption(*backend, spec.backend, "--backend " + options.backendSpec, assignment);
+  }
   if (options.substeps) {
     const OptionSpec* substeps = backend->options().withRole(OptionRole::Substeps);
     if (substeps == nullptr) {
-      throw UsageError("--substeps: backend '" + options.backendName +
-                       "' has no substeps option (" + optionNamesText(*backend) + ")");
+      throw UsageError("--substeps: backend '" + spec.backend + "' has no substeps option (" +
+                       optionNamesText(*backend) + ")");
     }
-    applyOption(*backend, options, "--substeps " + *options.substeps,
+    applyOption(*backend, spec.backend, "--substeps " + *options.substeps,
                 substeps->name + "=" + *options.substeps);
   }
   for (const std::string& assignment : options.assignments) {
-    applyOption(*backend, options, "--option " + assignment, assignment);
+    applyOption(*backend, spec.backend, "--option " + assignment, assignment);
   }
   return backend;
 }

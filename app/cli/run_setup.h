@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fooball/backend.h"
+#include "fooball/run_spec.h"
 #include "fooball/scene.h"
 #include "run_options.h"
 
@@ -20,8 +21,13 @@ void checkRunNumbers(const RunOptions& options, bool zeroDurationSteps = false);
 /// round(duration / dt), checked to be in [1, kMaxRunSteps]; throws UsageError.
 std::uint64_t stepCount(double duration, double dt);
 
-/// The backend named by --backend with --substeps and every --option applied, in that order.
-/// Throws UsageError naming the flag, the backend and (for an unknown option) its options;
+/// --backend's run spec as parsed; throws UsageError naming the flag and what is wrong with the
+/// spec's form.
+RunSpec backendSpec(const RunOptions& options);
+
+/// The backend --backend names, with the spec's options, then --substeps, then every --option
+/// applied, in that order (a later one wins): the flags are shorthand that edit the spec. Throws
+/// UsageError naming the flag, the backend and (for an unknown option) its options;
 /// std::invalid_argument listing the known backends for an unknown name.
 std::unique_ptr<Backend> configuredBackend(const RunOptions& options);
 

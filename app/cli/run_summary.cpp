@@ -18,6 +18,13 @@ std::string changeText(double change, double scale, const std::string& unit) {
   return readableText(change) + " " + unit + " (absolute)";
 }
 
+/// The relative energy error (fooball/metrics.h), or why there is none.
+std::string energyErrorText(const Metrics& metrics) {
+  const double error = relativeEnergyError(metrics);
+  if (std::isnan(error)) return "none (E(0) = 0: see the residual)";
+  return readableText(error) + " (residual / |E(0)|)";
+}
+
 std::string backendText(const RunSummary& summary) {
   if (summary.changedOptions.empty()) return summary.backendName;
   std::string text = summary.backendName + " (";
@@ -57,6 +64,7 @@ void printRunSummary(const RunSummary& summary, std::ostream& out) {
   table.addRow({"energy change:", changeText(energyChange, std::abs(startEnergy), "J")});
   table.addRow({"momentum change:", changeText(momentumChange, momentumScale, "N s")});
   table.addRow({"energy residual:", readableText(summary.end.energyResidual) + " J"});
+  table.addRow({"energy error:", energyErrorText(summary.end)});
   table.addRow({"ball collisions:", std::to_string(summary.end.ballCollisions)});
   table.addRow({"wall collisions:", std::to_string(summary.end.wallCollisions)});
   for (const Diagnostic& diagnostic : summary.diagnostics) {

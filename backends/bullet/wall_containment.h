@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "common/wall_mirror.h"
 #include "fooball/scene.h"
 
 namespace fooball::bullet_detail {
@@ -23,9 +24,7 @@ namespace fooball::bullet_detail {
 /// grows its array of those contacts every step (releasePredictiveContacts), so it is left at its
 /// default. The returns are counted (diagnostic `balls_brought_back`).
 ///
-/// Mirroring moves the ball against gravity by twice its depth, so the speed across the wall it
-/// leaves with pays for that lift (½v'² = ½v² + g·Δp along the axis; 0 if the lift costs more
-/// than the ball has): the energy an exact wall keeps. A ball whose velocity still pointed out of
+/// The mirror and its energy are common::WallMirror's. A ball whose velocity still pointed out of
 /// the box bounced here, not in Bullet: that bounce is counted with its impulse.
 class WallContainment {
  public:
@@ -35,9 +34,7 @@ class WallContainment {
   /// Brings `ball` (mass in kg) back if its centre is beyond a wall.
   void contain(btRigidBody& ball, double mass) {
     const btVector3& p = ball.getWorldTransform().getOrigin();
-    const double x = static_cast<double>(p.x());
-    const double y = static_cast<double>(p.y());
-    if (x >= lowX_ && x <= highX_ && y >= lowY_ && y <= highY_) return;
+    if (mirror_.inside(static_cast<double>(p.x()), static_cast<double>(p.y()))) return;
     bringBack(ball, mass);
   }
 
@@ -48,11 +45,7 @@ class WallContainment {
  private:
   void bringBack(btRigidBody& ball, double mass);
 
-  double lowX_;   ///< m, the lowest centre left alone (−∞ where the wall is off)
-  double highX_;  ///< m, the highest
-  double lowY_;
-  double highY_;
-  Vec2 gravity_;  ///< m/s²
+  common::WallMirror mirror_;
   std::uint64_t ballsBroughtBack_ = 0;
   std::uint64_t wallCollisions_ = 0;
   double impulse_ = 0.0;

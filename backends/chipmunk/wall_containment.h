@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "common/wall_mirror.h"
 #include "fooball/scene.h"
 
 namespace fooball::chipmunk_detail {
@@ -22,9 +23,7 @@ namespace fooball::chipmunk_detail {
 /// is only mirrored. A resting contact never gets this deep: the slop (contact_slop.h) is at most
 /// half the smallest radius.
 ///
-/// Mirroring moves the ball against gravity by twice its depth, so the normal speed it leaves
-/// with is lowered to pay for that lift (½v'² = ½v² + g·Δp per axis; 0 if the lift costs more
-/// than the ball has): the energy an exact wall would keep. The bounce is counted as a wall
+/// The mirror and its energy are common::WallMirror's. The bounce is counted as a wall
 /// collision only when Chipmunk cannot have seen it: a centre more than radius + 2·thickness
 /// beyond the face was beyond the wall's reach, so no contact began (contact_counter.h).
 class WallContainment {
@@ -35,7 +34,7 @@ class WallContainment {
   /// Brings `ball` (radius in m, mass in kg) back if its centre is beyond a wall.
   void contain(cpBody* ball, double radius, double mass) {
     const cpVect p = cpBodyGetPosition(ball);
-    if (p.x >= lowX_ && p.x <= highX_ && p.y >= lowY_ && p.y <= highY_) return;
+    if (mirror_.inside(p.x, p.y)) return;
     bringBack(ball, radius, mass);
   }
 
@@ -46,11 +45,7 @@ class WallContainment {
  private:
   void bringBack(cpBody* ball, double radius, double mass);
 
-  double lowX_;   ///< m, the lowest centre left alone (−∞ where the wall is off)
-  double highX_;  ///< m, the highest
-  double lowY_;
-  double highY_;
-  Vec2 gravity_;      ///< m/s²
+  common::WallMirror mirror_;
   double thickness_;  ///< m
   std::uint64_t ballsBroughtBack_ = 0;
   std::uint64_t wallCollisions_ = 0;

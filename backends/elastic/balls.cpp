@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/exact_size.h"
+
 namespace fooball::elastic {
 
 namespace {
@@ -21,11 +23,8 @@ bool movesBackLessThan(std::span<const std::uint32_t> order, std::size_t distanc
 
 void Balls::assign(std::span<const BallDef> balls) {
   const std::size_t count = balls.size();
-  // Exact sizes, released when a scene shrinks: memory follows the scene.
-  ball.resize(count);
-  ball.shrink_to_fit();
-  id.resize(count);
-  id.shrink_to_fit();
+  common::resizeExactly(ball, count);
+  common::resizeExactly(id, count);
   for (std::size_t i = 0; i < count; ++i) {
     const BallDef& def = balls[i];
     ball[i] = {def.position.x, def.position.y, def.velocity.x,

@@ -1,34 +1,17 @@
 #include "elastic/elastic_backend.h"
 
+#include "elastic_options.h"
 #include "elastic_world.h"
 
 namespace fooball {
 
 namespace {
 
-/// Balls each worker beyond the first needs before it joins a step. A worker adds a barrier wait
-/// to every phase of a substep: ~15 µs on an idle two-core machine, but up to a scheduler time
-/// slice when another process holds the other core, so beside two busy processes two workers
-/// on the 38-ball default scene take 11.8 ms a step against 0.9 µs for one. At 600'000 balls
-/// (two workers) they are 1.1–1.8× faster than one, idle or busy, and at 300'000 (one worker)
-/// this gives up the 2.1× that two would gain on an idle machine (docs/performance.md).
-constexpr double kBallsPerThread = 250'000;
-
 /// The seed's method done right (see ElasticWorld), behind the Backend interface: scene order and
 /// options.
 class ElasticBackend final : public Backend {
  public:
-  ElasticBackend()
-      : Backend(
-            {{"substeps", "solver substeps per step (more: less overlap, less tunnelling)", 4, 1,
-              1000, true, OptionRole::Substeps},
-             {"threads", "worker threads per step, at most (results are identical for any count)",
-              1, 1, 64, true, OptionRole::Threads},
-             {"balls_per_thread",
-              "balls each worker thread needs before it joins a step (0: every thread, always)",
-              kBallsPerThread, 0, 1e9, true, OptionRole::BallsPerThread}}) {
-    optionsChanged();
-  }
+  ElasticBackend() : Backend(elastic::elasticOptionSpecs()) { optionsChanged(); }
 
   void load(const Scene& scene) override { world_.load(scene.balls, scene.box, scene.world); }
 
@@ -63,9 +46,9 @@ class ElasticBackend final : public Backend {
 
  protected:
   void optionsChanged() override {
-    world_.setSubsteps(static_cast<int>(options_.value("substeps")));
-    world_.setWorkerPolicy({static_cast<int>(options_.value("threads")),
-                            static_cast<std::size_t>(options_.value("balls_per_thread"))});
+    const elastic::ElasticSettings settings = elastic::readElasticSettings(options_);
+    world_.setSubsteps(settings.substeps);
+    world_.setWorkerPolicy({settings.threads, settings.ballsPerThread});
   }
 
  private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "common/work_share.h"
 #include "elastic_world.h"
 #include "free_flight.h"
 #include "pair_collisions.h"
@@ -17,7 +18,8 @@ struct BallWorkParts {
   bool walls;  ///< the walls of the substep that ends
   bool fly;    ///< the free flight of the substep that starts
   bool cells;  ///< the cell of the ball's new centre, for the next pair search
-  CellOrder nextOrder = CellOrder::FromLowerLeft;  ///< how the next pair search numbers cells
+  common::CellOrder nextOrder =
+      common::CellOrder::FromLowerLeft;  ///< how the next pair search numbers cells
 };
 
 }  // namespace
@@ -53,9 +55,9 @@ class ElasticWorld::StepJob {
   /// How the pair search of this step's `substep` numbers the cells: from the lower left and
   /// the upper right by turns, counted across steps (kSubstepsPerReorder is even), and from the
   /// lower left on the substeps that reorder the balls, so memory keeps that order.
-  CellOrder cellOrder(int substep) const {
-    return (w_.substepsSinceReorder_ + substep) % 2 == 1 ? CellOrder::FromLowerLeft
-                                                         : CellOrder::FromUpperRight;
+  common::CellOrder cellOrder(int substep) const {
+    return (w_.substepsSinceReorder_ + substep) % 2 == 1 ? common::CellOrder::FromLowerLeft
+                                                         : common::CellOrder::FromUpperRight;
   }
 
   /// Calls f(std::true_type) or f(std::false_type): turns a flag into a template argument, so
@@ -75,7 +77,7 @@ class ElasticWorld::StepJob {
   void withBallWork(BallWorkParts parts, ChunkTally& tally, Loop&& loop) {
     const WorldSettings& world = w_.world_;
     const WallBounce wallBounce(w_.box_, world.walls, world.gravity);
-    CellLists& cells = w_.cells_;
+    common::CellLists& cells = w_.cells_;
     const auto run = [&](auto walls, auto fly, auto findCells, const auto& flight) {
       WallTally wallTally;
       double dragLoss = 0.0;
@@ -105,7 +107,7 @@ class ElasticWorld::StepJob {
   /// `parts` for the balls of this worker's chunks.
   void passOverChunks(int worker, BallWorkParts parts) {
     std::vector<Ball>& balls = w_.balls_.ball;
-    const Share chunks = shareOf(w_.chunkTallies_.size(), worker, w_.team_->size());
+    const common::Share chunks = common::shareOf(w_.chunkTallies_.size(), worker, w_.team_->size());
     for (std::size_t chunk = chunks.begin; chunk < chunks.end; ++chunk) {
       const std::size_t end = std::min(balls.size(), (chunk + 1) * kBallsPerChunk);
       withBallWork(parts, w_.chunkTallies_[chunk], [&](auto&& work) {
@@ -128,7 +130,7 @@ class ElasticWorld::StepJob {
 
   /// The oversized balls' pairs (the cells numbered in `order`), then `parts` for the oversized
   /// balls: no pair of the bands touches them.
-  void collideOversized(CellOrder order, BallWorkParts parts) {
+  void collideOversized(common::CellOrder order, BallWorkParts parts) {
     w_.workers_[0].impulses +=
         elastic::collideOversized(w_.balls_.ball, w_.cells_, order, w_.oversizedSweep_);
     std::vector<Ball>& balls = w_.balls_.ball;

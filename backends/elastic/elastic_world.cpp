@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "common/exact_size.h"
+
 namespace fooball::elastic {
 
 ElasticWorld::ElasticWorld() : team_(std::make_unique<WorkerTeam>(1)) {
@@ -37,25 +39,6 @@ std::size_t chunkCount(std::size_t balls) {
   return (balls + ElasticWorld::kBallsPerChunk - 1) / ElasticWorld::kBallsPerChunk;
 }
 
-/// The radius (m) the grid's cells are sized for: the largest, unless at most one ball in
-/// `ballsPerOversized` is more than twice as big as the rest — a few big balls among many small
-/// ones. Those are then left out of the grid (oversized), and the cells fit the small balls.
-double gridRadius(std::span<const Ball> balls, std::size_t ballsPerOversized) {
-  if (balls.empty()) return 1.0;
-  double largest = 0.0;
-  for (const Ball& ball : balls)
-    largest = std::max(largest, ball.radius);
-  const std::size_t oversized = balls.size() / ballsPerOversized;  // at most
-  if (oversized == 0) return largest;
-  std::vector<double> radii(balls.size());
-  std::transform(balls.begin(), balls.end(), radii.begin(),
-                 [](const Ball& ball) { return ball.radius; });
-  // The radius that `oversized` balls at most exceed.
-  const auto typical = radii.end() - 1 - static_cast<std::ptrdiff_t>(oversized);
-  std::nth_element(radii.begin(), typical, radii.end());
-  return *typical < 0.5 * largest ? *typical : largest;
-}
-
 }  // namespace
 
 void ElasticWorld::layout() {
@@ -71,16 +54,14 @@ void ElasticWorld::layout() {
     workers_.resize(static_cast<std::size_t>(workers));
   }
   cells_.layout(balls_.size(), box_.width, box_.height,
-                2.0 * gridRadius(balls_.ball, kBallsPerOversized), team_->size());
+                2.0 * common::gridRadius<Ball>(balls_.ball, kBallsPerOversized), team_->size());
   const auto oversized =
       std::count_if(balls_.ball.begin(), balls_.ball.end(),
                     [&](const Ball& ball) { return ball.radius > cells_.oversizedRadius(); });
-  oversizedSweep_.resize(static_cast<std::size_t>(oversized));
-  oversizedSweep_.shrink_to_fit();
+  common::resizeExactly(oversizedSweep_, static_cast<std::size_t>(oversized));
   rowsPerBand_ = std::max(1, (cells_.rows() + kMaxBands - 1) / kMaxBands);
   bandTallies_.resize(static_cast<std::size_t>((cells_.rows() + rowsPerBand_ - 1) / rowsPerBand_));
-  chunkTallies_.resize(chunkCount(balls_.size()));
-  chunkTallies_.shrink_to_fit();
+  common::resizeExactly(chunkTallies_, chunkCount(balls_.size()));
 }
 
 void ElasticWorld::applyKicks(double dt, std::span<const Vec2> forces) {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "balls.h"
-#include "cell_lists.h"
+#include "common/cell_lists.h"
 #include "fooball/backend.h"
 #include "fooball/scene.h"
 #include "pair_collisions.h"
@@ -97,7 +97,7 @@ class ElasticWorld {
   Box box_;
   WorldSettings world_;
   Balls balls_;
-  CellLists cells_;
+  common::CellLists cells_;
   BackendCounters counters_;
   int substeps_ = 1;
   WorkerPolicy workerPolicy_;

@@ -7,7 +7,7 @@ namespace fooball::elastic {
 
 void NeighbourSlots::gather(std::span<const std::uint32_t> hereAndRight,
                             std::span<const std::uint32_t> above) {
-  constexpr std::size_t kCopy = CellLists::kReadPastEnd;
+  constexpr std::size_t kCopy = common::CellLists::kReadPastEnd;
   size_ = hereAndRight.size() + above.size();
   std::uint32_t* slots = usual_.data();
   if (hereAndRight.size() <= kCopy && above.size() <= kCopy) {

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "cell_lists.h"
+#include "common/cell_lists.h"
 
 namespace fooball::elastic {
 
@@ -40,7 +40,7 @@ class NeighbourSlots {
  private:
   /// Room for the usual neighbourhood: two fixed-size copies and the lanes past their end.
   /// Inside the object, so a worker's scratch lies on its own cache lines (WorkerState).
-  std::array<std::uint32_t, 2 * CellLists::kReadPastEnd + kLanes> usual_{};
+  std::array<std::uint32_t, 2 * common::CellLists::kReadPastEnd + kLanes> usual_{};
   /// Slots crowded_ holds from the start (256 bytes a worker, under 0.3 bytes a ball at 1'000
   /// balls), so that a step allocates only for a neighbourhood of more than 56 balls, which
   /// takes balls piled deep into each other: which cells crowd most depends on the trajectory,

@@ -29,8 +29,8 @@ const auto scalarOverlapMask = [](const Probe& a, std::span<const Ball> balls,
 
 /// `a` against the grid's balls in the cells within its reach of any ball the grid holds, the
 /// grid numbered in `order`.
-std::uint64_t meetGridBalls(Probe& a, std::span<Ball> balls, const CellLists& cells,
-                            CellOrder order) {
+std::uint64_t meetGridBalls(Probe& a, std::span<Ball> balls, const common::CellLists& cells,
+                            common::CellOrder order) {
   // A grid ball overlaps `a` only within a.radius + oversizedRadius of its centre; cellAt clamps
   // like the grid does, so balls outside the box are found in the border cells.
   const double reach = a.radius + cells.oversizedRadius();
@@ -54,8 +54,8 @@ std::uint64_t meetGridBalls(Probe& a, std::span<Ball> balls, const CellLists& ce
 /// A ball's extent along the sweep: along x, or along −x when the grid is numbered from the
 /// upper right, so the sweep runs the way the cells do. NaN sorts first so the order stays
 /// strict.
-SweepEntry sweepEntry(const Ball& ball, std::uint32_t slot, CellOrder order) {
-  const double sign = order == CellOrder::FromLowerLeft ? 1.0 : -1.0;
+SweepEntry sweepEntry(const Ball& ball, std::uint32_t slot, common::CellOrder order) {
+  const double sign = order == common::CellOrder::FromLowerLeft ? 1.0 : -1.0;
   const double centre = sign * ball.x;
   const double left = centre - ball.radius;
   return {std::isnan(left) ? -std::numeric_limits<double>::infinity() : left, centre + ball.radius,
@@ -72,16 +72,16 @@ LaneTest fastestLaneTest() {
   return fastest;
 }
 
-std::uint64_t collideRows(std::span<Ball> balls, const CellLists& cells, int firstRow, int endRow,
-                          NeighbourSlots& neighbours, LaneTest laneTest) {
+std::uint64_t collideRows(std::span<Ball> balls, const common::CellLists& cells, int firstRow,
+                          int endRow, NeighbourSlots& neighbours, LaneTest laneTest) {
   if (laneTest == LaneTest::Avx2) {
     return collideRowsAvx2(balls, cells, firstRow, endRow, neighbours);
   }
   return collideRowsWith(balls, cells, firstRow, endRow, neighbours, scalarOverlapMask);
 }
 
-std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells, CellOrder order,
-                               std::span<SweepEntry> sweep) {
+std::uint64_t collideOversized(std::span<Ball> balls, const common::CellLists& cells,
+                               common::CellOrder order, std::span<SweepEntry> sweep) {
   const auto slots = cells.oversizedSlots();
   for (std::size_t k = 0; k < slots.size(); ++k)
     sweep[k] = sweepEntry(balls[slots[k]], slots[k], order);

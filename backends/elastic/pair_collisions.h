@@ -4,7 +4,7 @@
 #include <span>
 
 #include "balls.h"
-#include "cell_lists.h"
+#include "common/cell_lists.h"
 #include "neighbour_slots.h"
 
 namespace fooball::elastic {
@@ -33,11 +33,12 @@ LaneTest fastestLaneTest();
 /// - coincident centres get a deterministic normal instead of a division by zero.
 /// `neighbours` is the calling worker's scratch; `laneTest` must run on this CPU. Returns the
 /// number of impulses exchanged.
-std::uint64_t collideRows(std::span<Ball> balls, const CellLists& cells, int firstRow, int endRow,
-                          NeighbourSlots& neighbours, LaneTest laneTest = fastestLaneTest());
+std::uint64_t collideRows(std::span<Ball> balls, const common::CellLists& cells, int firstRow,
+                          int endRow, NeighbourSlots& neighbours,
+                          LaneTest laneTest = fastestLaneTest());
 
 /// collideRows with LaneTest::Avx2, compiled for AVX2: call it only on a CPU that has it.
-std::uint64_t collideRowsAvx2(std::span<Ball> balls, const CellLists& cells, int firstRow,
+std::uint64_t collideRowsAvx2(std::span<Ball> balls, const common::CellLists& cells, int firstRow,
                               int endRow, NeighbourSlots& neighbours);
 
 /// An oversized ball's extent (m) along the sweep's axis when collideOversized begins.
@@ -54,7 +55,7 @@ struct SweepEntry {
 /// balls that it meets along x (a sweep, so a few hundred big balls cost no quadratic pass).
 /// Touches any ball: run it while no other worker touches balls. `sweep` is scratch with one
 /// entry per oversized ball. Returns the impulses exchanged.
-std::uint64_t collideOversized(std::span<Ball> balls, const CellLists& cells, CellOrder order,
-                               std::span<SweepEntry> sweep);
+std::uint64_t collideOversized(std::span<Ball> balls, const common::CellLists& cells,
+                               common::CellOrder order, std::span<SweepEntry> sweep);
 
 }  // namespace fooball::elastic

@@ -15,7 +15,7 @@
 #include <span>
 
 #include "balls.h"
-#include "cell_lists.h"
+#include "common/cell_lists.h"
 #include "neighbour_slots.h"
 #include "pair_collisions.h"
 
@@ -65,7 +65,7 @@ const auto avx2OverlapMask = [](const Probe& a, std::span<const Ball> balls,
 
 }  // namespace
 
-std::uint64_t collideRowsAvx2(std::span<Ball> balls, const CellLists& cells, int firstRow,
+std::uint64_t collideRowsAvx2(std::span<Ball> balls, const common::CellLists& cells, int firstRow,
                               int endRow, NeighbourSlots& neighbours) {
   return collideRowsWith(balls, cells, firstRow, endRow, neighbours, avx2OverlapMask);
 }

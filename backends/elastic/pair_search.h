@@ -11,7 +11,7 @@
 #include <span>
 
 #include "balls.h"
-#include "cell_lists.h"
+#include "common/cell_lists.h"
 #include "neighbour_slots.h"
 
 namespace fooball::elastic {
@@ -110,8 +110,9 @@ template <class OverlapMask>
 /// collideRows (pair_collisions.h) with the given lane test.
 template <class OverlapMask>
 [[gnu::always_inline]] inline std::uint64_t collideRowsWith(std::span<Ball> balls,
-                                                            const CellLists& cells, int firstRow,
-                                                            int endRow, NeighbourSlots& neighbours,
+                                                            const common::CellLists& cells,
+                                                            int firstRow, int endRow,
+                                                            NeighbourSlots& neighbours,
                                                             OverlapMask overlapMask) {
   // No balls, no pairs; and the prefetches below may not index an empty span.
   if (balls.empty()) return 0;

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "exact/axis.h"
+#include "axis.h"
 #include "fooball/vec2.h"
 
 namespace fooball::exact {

@@ -1,10 +1,10 @@
-#include "exact/barrier_contact.h"
+#include "barrier_contact.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "exact/free_flight.h"
+#include "free_flight.h"
 
 namespace fooball::exact {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "exact/axis.h"
+#include "axis.h"
 
 namespace fooball::exact {
 

@@ -1,4 +1,4 @@
-#include "exact/event_calendar.h"
+#include "event_calendar.h"
 
 #include <algorithm>
 #include <cmath>

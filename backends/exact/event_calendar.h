@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "exact/event_heap.h"
-#include "exact/linked_lists.h"
+#include "event_heap.h"
+#include "linked_lists.h"
 
 namespace fooball::exact {
 

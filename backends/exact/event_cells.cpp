@@ -1,4 +1,4 @@
-#include "exact/event_cells.h"
+#include "event_cells.h"
 
 #include <algorithm>
 #include <cmath>

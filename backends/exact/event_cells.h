@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "exact/axis.h"
-#include "exact/linked_lists.h"
+#include "axis.h"
 #include "fooball/vec2.h"
+#include "linked_lists.h"
 
 namespace fooball::exact {
 

@@ -1,4 +1,4 @@
-#include "exact/event_driven_world.h"
+#include "event_driven_world.h"
 
 #include <algorithm>
 #include <cmath>

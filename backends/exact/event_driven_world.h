@@ -4,17 +4,17 @@
 #include <span>
 #include <vector>
 
-#include "exact/axis.h"
-#include "exact/ball_motion.h"
-#include "exact/event.h"
-#include "exact/event_calendar.h"
-#include "exact/event_cells.h"
+#include "axis.h"
+#include "ball_motion.h"
+#include "event.h"
+#include "event_calendar.h"
+#include "event_cells.h"
 #include "fooball/backend.h"
 #include "fooball/scene.h"
 
 namespace fooball::exact {
 
-/// Guards against event explosions; both are backend options (exact_backend.cpp).
+/// Guards against event explosions; both are backend options (exact_options.cpp).
 struct EventLimits {
   /// s. A wall bounce under gravity whose flight back would last less than this leaves the ball
   /// resting on the wall: its normal speed (at most g·t/2) is dropped and the wall carries

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "exact/event_driven_world.h"
-#include "exact/free_flight.h"
+#include "event_driven_world.h"
+#include "free_flight.h"
 
 namespace fooball::exact {
 

@@ -1,4 +1,4 @@
-#include "exact/event_heap.h"
+#include "event_heap.h"
 
 namespace fooball::exact {
 

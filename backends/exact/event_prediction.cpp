@@ -2,10 +2,10 @@
 #include <cmath>
 #include <limits>
 
-#include "exact/barrier_contact.h"
-#include "exact/event_driven_world.h"
-#include "exact/free_flight.h"
-#include "exact/pair_contact.h"
+#include "barrier_contact.h"
+#include "event_driven_world.h"
+#include "free_flight.h"
+#include "pair_contact.h"
 
 namespace fooball::exact {
 

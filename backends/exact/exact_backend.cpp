@@ -1,35 +1,16 @@
 #include "exact/exact_backend.h"
 
-#include <string>
-#include <utility>
-
-#include "exact/event_driven_world.h"
+#include "event_driven_world.h"
+#include "exact_options.h"
 
 namespace fooball {
 
 namespace {
 
-constexpr const char* kRestBounceTime = "rest_bounce_time";
-constexpr const char* kMaxEventsPerBall = "max_events_per_ball";
-
-std::vector<OptionSpec> exactOptionSpecs() {
-  const exact::EventLimits defaults;
-  return {
-      {kRestBounceTime,
-       "s; a wall bounce under gravity returning sooner than this leaves the ball resting on the "
-       "wall (drops at most m(g t/2)^2/2 of energy)",
-       defaults.restBounceTime, 0.0, 1.0, false},
-      {kMaxEventsPerBall,
-       "events per ball in one step (as for at least 500 balls) before the rest of the step moves "
-       "without collisions (0: no cap, every step exact)",
-       defaults.maxEventsPerBall, 0.0, 1e9, true, OptionRole::EventCap},
-  };
-}
-
 /// The `exact` backend: the event-driven solver behind the Backend interface.
 class ExactBackend final : public Backend {
  public:
-  ExactBackend() : Backend(exactOptionSpecs()) { ExactBackend::optionsChanged(); }
+  ExactBackend() : Backend(exact::exactOptionSpecs()) { ExactBackend::optionsChanged(); }
 
   void load(const Scene& scene) override { world_.load(scene); }
 
@@ -66,9 +47,7 @@ class ExactBackend final : public Backend {
   }
 
  protected:
-  void optionsChanged() override {
-    world_.setLimits({options_.value(kRestBounceTime), options_.value(kMaxEventsPerBall)});
-  }
+  void optionsChanged() override { world_.setLimits(exact::readEventLimits(options_)); }
 
  private:
   exact::EventDrivenWorld world_;

@@ -1,4 +1,4 @@
-#include "exact/free_flight.h"
+#include "free_flight.h"
 
 #include <cmath>
 #include <limits>

@@ -1,9 +1,9 @@
-#include "exact/pair_contact.h"
+#include "pair_contact.h"
 
 #include <cmath>
 #include <limits>
 
-#include "exact/free_flight.h"
+#include "free_flight.h"
 
 namespace fooball::exact {
 

@@ -49,7 +49,7 @@ void PairContacts::meet(std::span<const Particle> particles, std::uint32_t a,
   }
 }
 
-void PairContacts::find(std::span<const Particle> particles, const CellGrid& grid) {
+void PairContacts::find(std::span<const Particle> particles, const common::CellLists& grid) {
   contacts_.clear();
   const int columns = grid.columns();
   const int rows = grid.rows();
@@ -74,7 +74,8 @@ void PairContacts::find(std::span<const Particle> particles, const CellGrid& gri
   findOversized(particles, grid);
 }
 
-void PairContacts::findOversized(std::span<const Particle> particles, const CellGrid& grid) {
+void PairContacts::findOversized(std::span<const Particle> particles,
+                                 const common::CellLists& grid) {
   const auto slots = grid.oversizedSlots();
   if (slots.empty()) return;
   sweep_.resize(slots.size());
@@ -94,8 +95,10 @@ void PairContacts::findOversized(std::span<const Particle> particles, const Cell
     // A grid ball overlaps `a` only within a.radius + oversizedRadius of its centre; cellAt
     // clamps as the grid does, so balls outside the box are found in the border cells.
     const double reach = pa.radius + grid.oversizedRadius();
-    const auto low = static_cast<int>(grid.cellAt(pa.x - reach, pa.y - reach));
-    const auto high = static_cast<int>(grid.cellAt(pa.x + reach, pa.y + reach));
+    const auto low =
+        static_cast<int>(grid.cellAt(pa.x - reach, pa.y - reach, common::CellOrder::FromLowerLeft));
+    const auto high =
+        static_cast<int>(grid.cellAt(pa.x + reach, pa.y + reach, common::CellOrder::FromLowerLeft));
     for (int row = low / columns; row <= high / columns; ++row) {
       meet(particles, a,
            grid.slotsIn(row * columns + low % columns, row * columns + high % columns + 1));

@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "cell_grid.h"
+#include "common/cell_lists.h"
 #include "contact_memory.h"
 #include "particles.h"
 
@@ -29,7 +29,7 @@ class PairContacts {
   /// against the later balls of its cell, the cell to its right and the three cells above; then
   /// each oversized ball against the grid balls within its reach and the later oversized balls
   /// it meets along x (a sweep over their left edges).
-  void find(std::span<const Particle> particles, const CellGrid& grid);
+  void find(std::span<const Particle> particles, const common::CellLists& grid);
 
   /// One Gauss–Seidel pass: every contact still overlapping is pushed apart to touching along
   /// the line of centres, each ball moved in proportion to its inverse mass, so the centre of
@@ -64,7 +64,7 @@ class PairContacts {
 
   void meet(std::span<const Particle> particles, std::uint32_t a,
             std::span<const std::uint32_t> candidates);
-  void findOversized(std::span<const Particle> particles, const CellGrid& grid);
+  void findOversized(std::span<const Particle> particles, const common::CellLists& grid);
 
   std::vector<PairContact> contacts_;
   std::vector<SweepEntry> sweep_;

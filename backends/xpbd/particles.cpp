@@ -3,25 +3,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/exact_size.h"
+
 namespace fooball::xpbd {
-
-namespace {
-
-/// Exact sizes, released when a scene shrinks: memory follows the scene.
-template <class T>
-void resizeExactly(std::vector<T>& array, std::size_t size) {
-  array.resize(size);
-  array.shrink_to_fit();
-}
-
-}  // namespace
 
 void Particles::assign(std::span<const BallDef> balls) {
   const std::size_t count = balls.size();
-  resizeExactly(particle, count);
-  resizeExactly(id, count);
-  resizeExactly(wallHistory, count);
-  resizeExactly(moved, count);
+  common::resizeExactly(particle, count);
+  common::resizeExactly(id, count);
+  common::resizeExactly(wallHistory, count);
+  common::resizeExactly(moved, count);
   for (std::size_t i = 0; i < count; ++i) {
     set(i, balls[i]);
     id[i] = static_cast<std::uint32_t>(i);

@@ -1,5 +1,6 @@
 #include "xpbd/xpbd_backend.h"
 
+#include "xpbd_options.h"
 #include "xpbd_world.h"
 
 namespace fooball {
@@ -9,15 +10,7 @@ namespace {
 /// Small-steps XPBD (see XpbdWorld) behind the Backend interface: scene order and options.
 class XpbdBackend final : public Backend {
  public:
-  XpbdBackend()
-      : Backend({{"substeps", "solver substeps per step (more: less tunnelling and overlap)",
-                  kDefaultSubsteps, 1, 1000, true, OptionRole::Substeps},
-                 {"iterations",
-                  "Gauss–Seidel sweeps per substep of the contact projection and of the velocity "
-                  "pass (more: less energy error where contacts share a ball)",
-                  kDefaultIterations, 1, 100, true, OptionRole::Iterations}}) {
-    optionsChanged();
-  }
+  XpbdBackend() : Backend(xpbd::xpbdOptionSpecs()) { optionsChanged(); }
 
   void load(const Scene& scene) override { world_.load(scene.balls, scene.box, scene.world); }
 
@@ -50,21 +43,12 @@ class XpbdBackend final : public Backend {
 
  protected:
   void optionsChanged() override {
-    world_.setSubsteps(static_cast<int>(options_.value("substeps")));
-    world_.setIterations(static_cast<int>(options_.value("iterations")));
+    const xpbd::XpbdSettings settings = xpbd::readXpbdSettings(options_);
+    world_.setSubsteps(settings.substeps);
+    world_.setIterations(settings.iterations);
   }
 
  private:
-  /// Substeps per step, measured on the gas preset (docs/performance.md, "Speed against
-  /// accuracy"): 8 leave no overlap at the end of a step (2e-14 r, against 0.009 r at 4), halve
-  /// the trajectory error of 4 and put the gas's tunnelling speed at 96 m/s, twenty times its
-  /// fastest ball; 16 would halve the energy loss again at twice the cost.
-  static constexpr double kDefaultSubsteps = 8;
-  /// Sweeps per substep: one (Müller's single velocity pass) loses a tenth of the gas's energy in
-  /// 20 s at any substep count, four lose 0.17% (the passes then meet the restitution targets of
-  /// contacts that share a ball), for 20–40% more cost per step.
-  static constexpr double kDefaultIterations = 4;
-
   xpbd::XpbdWorld world_;
 };
 

@@ -3,26 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/exact_size.h"
+
 namespace fooball::xpbd {
 
 namespace {
 
-/// The radius (m) the grid's cells are sized for: the largest, unless at most one ball in
-/// `ballsPerOversized` is more than twice as big as the rest — a few big balls among many small
-/// ones. Those are then left out of the grid (oversized), and the cells fit the small balls.
-double gridRadius(std::span<const Particle> particles, std::size_t ballsPerOversized) {
-  if (particles.empty()) return 1.0;
-  double largest = 0.0;
-  for (const Particle& p : particles)
-    largest = std::max(largest, p.radius);
-  const std::size_t oversized = particles.size() / ballsPerOversized;  // at most
-  if (oversized == 0) return largest;
-  std::vector<double> radii(particles.size());
-  std::transform(particles.begin(), particles.end(), radii.begin(),
-                 [](const Particle& p) { return p.radius; });
-  const auto typical = radii.end() - 1 - static_cast<std::ptrdiff_t>(oversized);
-  std::nth_element(radii.begin(), typical, radii.end());
-  return *typical < 0.5 * largest ? *typical : largest;
+/// Sorts the balls' slots by the cell of their current centres, numbered from the lower left,
+/// by one worker.
+void sortByCell(common::CellLists& grid, std::span<const Particle> particles) {
+  constexpr auto kOrder = common::CellOrder::FromLowerLeft;
+  for (std::size_t slot = 0; slot < particles.size(); ++slot) {
+    const Particle& p = particles[slot];
+    grid.setCell(slot, grid.cellOf(p.x, p.y, p.radius, kOrder));
+  }
+  grid.countShare(0);
+  grid.sortShare(0, kOrder);
 }
 
 }  // namespace
@@ -44,15 +40,14 @@ void XpbdWorld::setBall(std::size_t slot, const BallDef& ball) {
 void XpbdWorld::layout() {
   const std::size_t balls = particles_.size();
   grid_.layout(balls, box_.width, box_.height,
-               2.0 * gridRadius(particles_.particle, kBallsPerOversized));
+               2.0 * common::gridRadius<Particle>(particles_.particle, kBallsPerOversized), 1);
   memory_.reset(balls);
   // Room for a contact per ball and for a quarter of the balls on a wall, so that an ordinary
   // scene's steady state does not allocate; piles and crowds grow the buffers once, in their
   // first steps (32 and 40 bytes per entry: a contact per ball costs half the balls' own memory).
   pairs_.reserve(balls + 64);
   wallContacts_.reserve(balls / 4 + 64);
-  wallRecordOf_.resize(2 * balls);
-  wallRecordOf_.shrink_to_fit();
+  common::resizeExactly(wallRecordOf_, 2 * balls);
 }
 
 void XpbdWorld::step(double dt, std::span<const Vec2> forces) {
@@ -111,7 +106,7 @@ void XpbdWorld::substep(double h) {
   predict(h);
   const bool collisions = world_.ballCollisions && particles_.size() > 1;
   if (collisions) {
-    grid_.build(particles_.particle);
+    sortByCell(grid_, particles_.particle);
     if (substepCount_ % kSubstepsPerReorder == 0) {
       // Move the balls into cell order: the sorted slots become the identity, and the grid
       // still describes the balls, now in their new slots.

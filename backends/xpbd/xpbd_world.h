@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "cell_grid.h"
+#include "common/cell_lists.h"
 #include "contact_memory.h"
 #include "fooball/backend.h"
 #include "fooball/scene.h"
@@ -73,7 +73,7 @@ class XpbdWorld {
   Box box_;
   WorldSettings world_;
   Particles particles_;
-  CellGrid grid_;
+  common::CellLists grid_;
   PairContacts pairs_;
   ContactMemory memory_;
   std::vector<WallContact> wallContacts_;

@@ -57,10 +57,7 @@ LimitNumbers measureLimitNumbers(const Simulation& run) {
   if (world.ballCollisions && wallUnderGravity(world))
     numbers.pileSinkPerSolverStep = length(world.gravity) * h * h / smallestRadius;
   numbers.packingFraction = area / (run.box().width * run.box().height);
-  const Metrics metrics = run.metrics(GeometryChecks::Skip);
-  const double energy = metrics.sums.totalEnergy();
-  numbers.energyResidual = metrics.energyResidual;
-  numbers.energyScale = std::max(std::abs(energy), std::abs(energy - metrics.energyResidual));
+  numbers.relativeEnergyError = relativeEnergyError(run.metrics(GeometryChecks::Skip));
   return numbers;
 }
 
@@ -70,10 +67,10 @@ std::vector<CrossedLimit> crossedLimits(const LimitNumbers& numbers, const Metho
   checkBoundary(crossed, MethodLimit::RestingPile, numbers.pileSinkPerSolverStep,
                 limits.restingPile);
   checkBoundary(crossed, MethodLimit::Packing, numbers.packingFraction, limits.packing);
-  const double error = std::abs(numbers.energyResidual);
-  if (error > kEnergyErrorLimit * numbers.energyScale && numbers.energyScale > 0.0) {
-    crossed.push_back(
-        {MethodLimit::EnergyError, error / numbers.energyScale, kEnergyErrorLimit, 0.0});
+  // NaN (no E(0) to be relative to) is not beyond the limit.
+  const double error = std::abs(numbers.relativeEnergyError);
+  if (error > kEnergyErrorLimit) {
+    crossed.push_back({MethodLimit::EnergyError, error, kEnergyErrorLimit, 0.0});
   }
   return crossed;
 }
@@ -108,7 +105,7 @@ std::string numberName(MethodLimit limit) {
     case MethodLimit::Packing:
       return "packing";
     case MethodLimit::EnergyError:
-      return "|residual|/E";
+      return "|residual|/|E(0)|";
   }
   return {};
 }
@@ -162,7 +159,8 @@ std::string limitExplanation(const CrossedLimit& crossed) {
              "event-driven method.";
     case MethodLimit::EnergyError:
       return "Energy error: the method's own error (the energy budget's residual) is " + value +
-             " of the run's energy, more than " + roundedNumberText(crossed.boundary) +
+             " of the energy the run started with, more than " +
+             roundedNumberText(crossed.boundary) +
              ", whether or not a mapped limit explains it: its trajectory is not to be trusted. "
              "More substeps or a smaller dt, and compare with another method.";
   }

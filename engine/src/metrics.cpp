@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "overlap_search.h"
 
@@ -50,6 +51,12 @@ std::size_t countEscaped(std::span<const Vec2> positions, const Box& box) {
   return static_cast<std::size_t>(std::count_if(positions.begin(), positions.end(), [&](Vec2 p) {
     return !(p.x >= 0.0 && p.x <= box.width && p.y >= 0.0 && p.y <= box.height);
   }));
+}
+
+double relativeEnergyError(double energyResidual, double initialEnergy) {
+  const double scale = std::abs(initialEnergy);
+  if (scale == 0.0 || !std::isfinite(scale)) return std::numeric_limits<double>::quiet_NaN();
+  return energyResidual / scale;
 }
 
 }  // namespace fooball

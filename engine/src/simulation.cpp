@@ -297,6 +297,7 @@ Metrics Simulation::metrics(GeometryChecks geometry) const {
   metrics.dragLoss = counts.dragLoss;
   metrics.energyResidual =
       metrics.sums.totalEnergy() - initialEnergy_ - externalWork_ + counts.dragLoss;
+  metrics.initialEnergy = initialEnergy_;
   return metrics;
 }
 

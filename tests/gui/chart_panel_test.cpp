@@ -42,6 +42,7 @@ Metrics metricsAt(double time, int runIndex = 0) {
   metrics.sums.potentialEnergy = 30.0 - 20.0 * std::sin(phase);
   metrics.sums.momentum = {4.0 * std::cos(phase), 3.0 * std::sin(0.5 * phase)};
   metrics.energyResidual = (1.0 + runIndex) * 1e-6 * time;
+  metrics.initialEnergy = 80.0;  // J, the total energy above at every time
   return metrics;
 }
 
@@ -262,6 +263,7 @@ Metrics residualOfSize(double time, double size) {
   metrics.energyResidual = size * (1.0 + 0.8 * std::sin(3.0 * time));
   metrics.sums.kineticEnergy = 10.0;
   metrics.sums.potentialEnergy = 0.0;
+  metrics.initialEnergy = 10.0;
   return metrics;
 }
 

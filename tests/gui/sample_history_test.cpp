@@ -212,13 +212,15 @@ TEST(SampleHistory, ClearEmptiesIt) {
   EXPECT_TRUE(everything(history).empty());
 }
 
-Metrics metricsAt(double time, double kineticEnergy, double residual) {
+/// `initialEnergy` (J) is E(0), which the run's Simulation reports with every sample.
+Metrics metricsAt(double time, double kineticEnergy, double residual, double initialEnergy = 0.0) {
   Metrics metrics;
   metrics.time = time;
   metrics.sums.kineticEnergy = kineticEnergy;
   metrics.sums.potentialEnergy = 2.0;
   metrics.sums.momentum = {3.0, -4.0};
   metrics.energyResidual = residual;
+  metrics.initialEnergy = initialEnergy;
   return metrics;
 }
 
@@ -249,8 +251,8 @@ TEST(ChartData, CompareModeRunsKeepIndependentHistories) {
 TEST(ChartData, SampleHoldsTheChartedQuantities) {
   ChartData data;
   data.reset({"elastic"});
-  data.addSample(0, metricsAt(0.0, 6.0, 0.0), {});  // E₀ = 6 + 2 = 8 J
-  data.addSample(0, metricsAt(0.1, 5.0, -0.5), {});
+  data.addSample(0, metricsAt(0.0, 6.0, 0.0, 8.0), {});  // E₀ = 6 + 2 = 8 J
+  data.addSample(0, metricsAt(0.1, 5.0, -0.5, 8.0), {});
   const ChartSample& sample = data.history(0).latest();
   EXPECT_EQ(sample[Quantity::MomentumX], 3.0);
   EXPECT_EQ(sample[Quantity::MomentumY], -4.0);
@@ -260,6 +262,15 @@ TEST(ChartData, SampleHoldsTheChartedQuantities) {
   EXPECT_EQ(sample[Quantity::TotalEnergy], 7.0);
   EXPECT_EQ(sample[Quantity::EnergyResidual], -0.5);
   EXPECT_EQ(sample[Quantity::RelativeEnergyResidual], -0.5 / 8.0);
+}
+
+// The chart once took E₀ from its own first sample, so a history that began mid-run (a run added
+// to the charts later, or charts reset) divided by the energy then, not by the run's E(0).
+TEST(ChartData, RelativeResidualIsAgainstTheRunsInitialEnergyWhereverTheHistoryBegins) {
+  ChartData data;
+  data.reset({"elastic"});
+  data.addSample(0, metricsAt(3.0, 18.0, -1.0, 10.0), {});  // E = 20 J now, E(0) = 10 J
+  EXPECT_EQ(data.history(0).latest()[Quantity::RelativeEnergyResidual], -0.1);
 }
 
 TEST(ChartData, RelativeResidualIsUndefinedForZeroInitialEnergy) {
@@ -306,8 +317,8 @@ TEST(ChartData, AddingRemovingAndRenamingRunsKeepsTheOthersHistories) {
   EXPECT_EQ(data.history(0).addedCount(), 5u);
   EXPECT_EQ(data.history(1).addedCount(), 2u);
   EXPECT_EQ(data.history(1).latest()[Quantity::KineticEnergy], 3.0);
-  // E₀ moved with its run: the relative residual is still against box2d's first energy (5 J).
-  data.addSample(1, metricsAt(0.7, 3.0, 1.0), {});
+  // The moved run's samples still land in its own history, against its own E(0) (5 J).
+  data.addSample(1, metricsAt(0.7, 3.0, 1.0, 5.0), {});
   EXPECT_EQ(data.history(1).latest()[Quantity::RelativeEnergyResidual], 1.0 / 5.0);
 
   for (int i = 0; i < 10; ++i)

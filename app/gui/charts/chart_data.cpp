@@ -13,15 +13,15 @@ ChartData::ChartData() {
 void ChartData::reset(const QStringList& runNames) {
   runs_.clear();
   for (const QString& name : runNames.mid(0, kMaxRuns))
-    runs_.push_back({name, SampleHistory(), 0.0});
-  if (runs_.empty()) runs_.push_back({QString(), SampleHistory(), 0.0});
+    runs_.push_back({name, SampleHistory()});
+  if (runs_.empty()) runs_.push_back({QString(), SampleHistory()});
   baseline_.history.clear();
   markers_.clear();
 }
 
 void ChartData::addRun(const QString& name) {
   if (runCount() >= kMaxRuns) return;
-  runs_.push_back({name, SampleHistory(), 0.0});
+  runs_.push_back({name, SampleHistory()});
 }
 
 void ChartData::removeRun(int runIndex) {
@@ -49,13 +49,7 @@ QStringList ChartData::runNames() const {
 void ChartData::addSample(int runIndex, const Metrics& metrics, const Divergence& fromRunZero) {
   const bool isRun = runIndex >= 0 && runIndex < runCount();
   if (!isRun && !(runIndex == kBaseline && baselineShown_)) return;
-  Run& target = run(runIndex);
-  // The history starts over on an empty history or a time going back (see SampleHistory::add);
-  // E₀ starts over with it.
-  if (target.history.empty() || metrics.time < target.history.latest().time) {
-    target.initialTotalEnergy = metrics.sums.totalEnergy();
-  }
-  target.history.add(chartSampleFrom(metrics, fromRunZero, target.initialTotalEnergy));
+  run(runIndex).history.add(chartSampleFrom(metrics, fromRunZero));
 }
 
 void ChartData::addMarker(double time, const QString& label) {

@@ -79,7 +79,6 @@ class ChartData {
   struct Run {
     QString name;
     SampleHistory history;
-    double initialTotalEnergy = 0.0;  ///< J, E₀ for the relative residual
   };
 
   Run& run(int runIndex) { return runIndex == kBaseline ? baseline_ : runs_[runIndex]; }

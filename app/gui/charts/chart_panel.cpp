@@ -202,7 +202,8 @@ QToolBar* ChartPanel::createToolBar() {
       QStringLiteral("residualToggle"));
   relativeResidualToggle_ = addQuantityToggle(
       toolBar, tr("÷|E₀|"),
-      tr("Show the residual relative to |E₀|, the run's total energy at its first sample"),
+      tr("Show the residual relative to |E₀|, the run's total energy where its budget began "
+         "(load or restart)"),
       QStringLiteral("relativeResidualToggle"));
   {
     const QSignalBlocker blocker(relativeResidualToggle_);  // the toggles are not all there yet

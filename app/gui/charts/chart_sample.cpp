@@ -1,12 +1,10 @@
 #include "chart_sample.h"
 
 #include <cmath>
-#include <limits>
 
 namespace fooball::gui {
 
-ChartSample chartSampleFrom(const Metrics& metrics, const Divergence& fromRunZero,
-                            double initialTotalEnergy) {
+ChartSample chartSampleFrom(const Metrics& metrics, const Divergence& fromRunZero) {
   const StateSums& sums = metrics.sums;
   ChartSample sample;
   sample.time = metrics.time;
@@ -17,10 +15,8 @@ ChartSample chartSampleFrom(const Metrics& metrics, const Divergence& fromRunZer
   sample[Quantity::PotentialEnergy] = sums.potentialEnergy;
   sample[Quantity::TotalEnergy] = sums.totalEnergy();
   sample[Quantity::EnergyResidual] = metrics.energyResidual;
-  // A relative error has no meaning against a zero reference; NaN leaves a gap in the chart.
-  sample[Quantity::RelativeEnergyResidual] =
-      initialTotalEnergy != 0.0 ? metrics.energyResidual / std::abs(initialTotalEnergy)
-                                : std::numeric_limits<double>::quiet_NaN();
+  // NaN where E(0) is zero leaves a gap in the chart.
+  sample[Quantity::RelativeEnergyResidual] = relativeEnergyError(metrics);
   sample[Quantity::RmsPositionDifference] = fromRunZero.rmsPositionDifference;
   sample[Quantity::MaxPositionDifference] = fromRunZero.maxPositionDifference;
   return sample;

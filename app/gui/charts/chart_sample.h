@@ -17,7 +17,7 @@ enum class Quantity : std::size_t {
   PotentialEnergy,         ///< J
   TotalEnergy,             ///< J
   EnergyResidual,          ///< J, Metrics::energyResidual: the method's own error
-  RelativeEnergyResidual,  ///< energyResidual / |E₀|; NaN when E₀ is zero
+  RelativeEnergyResidual,  ///< relativeEnergyError (fooball/metrics.h): residual / |E(0)|
   RmsPositionDifference,   ///< m, Divergence::rmsPositionDifference from run 0
   MaxPositionDifference,   ///< m, Divergence::maxPositionDifference from run 0
 };
@@ -33,9 +33,7 @@ struct ChartSample {
   double& operator[](Quantity quantity) { return values[static_cast<std::size_t>(quantity)]; }
 };
 
-/// `fromRunZero` is the run's divergence from run 0 at the same time (zero for run 0 itself);
-/// `initialTotalEnergy` (J) is E₀, the run's first total energy, for the relative residual.
-ChartSample chartSampleFrom(const Metrics& metrics, const Divergence& fromRunZero,
-                            double initialTotalEnergy);
+/// `fromRunZero` is the run's divergence from run 0 at the same time (zero for run 0 itself).
+ChartSample chartSampleFrom(const Metrics& metrics, const Divergence& fromRunZero);
 
 }  // namespace fooball::gui

@@ -54,13 +54,10 @@ std::vector<SweepPoint> packingSweep(std::string_view backend, bool quick) {
       const Scene scene = latticeGas(radius, fraction, side);
       const double boxFraction = static_cast<double>(scene.balls.size()) * std::numbers::pi *
                                  radius * radius / (scene.box.width * scene.box.height);
-      double kinetic = 0.0;
-      for (const BallDef& ball : scene.balls)
-        kinetic += 0.5 * ball.mass * lengthSquared(ball.velocity);
       const RunRecord run = runScene(scene, backend, seconds);
       points.push_back(measuredPoint(
           scene, std::to_string(side * side) + " balls r=" + (radius < 0.15 ? "0.1" : "0.2") + " m",
-          boxFraction, run.energyDrift / kinetic, run.maxOverlap));
+          boxFraction, run.energyError, run.maxOverlap));
     }
   }
   return points;

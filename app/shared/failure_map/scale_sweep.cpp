@@ -42,12 +42,8 @@ std::vector<SweepPoint> scaleSweep(std::string_view backend, bool quick) {
   std::vector<SweepPoint> points;
   for (const double scale : logGrid(1e-4, 1e4, quick ? 9 : 17)) {
     const Scene scene = scaledGas(scale);
-    double kinetic = 0.0;
-    for (const BallDef& ball : scene.balls)
-      kinetic += 0.5 * ball.mass * lengthSquared(ball.velocity);
     const RunRecord run = runScene(scene, backend, quick ? 1.0 : 2.0);
-    points.push_back(
-        measuredPoint(scene, "40 balls", scale, run.energyDrift / kinetic, run.maxOverlap));
+    points.push_back(measuredPoint(scene, "40 balls", scale, run.energyError, run.maxOverlap));
   }
   return points;
 }

@@ -30,9 +30,12 @@ RunRecord runScene(const Scene& scene, std::string_view backend, double seconds,
     record.energyDrift = std::isnan(metrics.energyResidual)
                              ? metrics.energyResidual
                              : std::max(record.energyDrift, std::abs(metrics.energyResidual));
+    const double energyError = std::abs(relativeEnergyError(metrics));
+    record.energyError =
+        std::isnan(energyError) ? energyError : std::max(record.energyError, energyError);
     record.maxOverlap = std::max(record.maxOverlap, metrics.maxOverlap);
     record.escaped = metrics.escaped;
-    if (std::isnan(record.energyDrift)) break;
+    if (std::isnan(record.energyDrift) || std::isnan(record.energyError)) break;
   }
   record.positions.assign(simulation.positions().begin(), simulation.positions().end());
   record.velocities.assign(simulation.velocities().begin(), simulation.velocities().end());

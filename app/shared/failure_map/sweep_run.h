@@ -19,6 +19,7 @@ double solverStep(const Backend& backend, double dt);
 /// What one run of a scene did, watched after every step.
 struct RunRecord {
   double energyDrift = 0.0;      ///< J, largest |E(t) − E(0)| (Metrics::energyResidual)
+  double energyError = 0.0;      ///< largest |relativeEnergyError| (fooball/metrics.h)
   double maxOverlap = 0.0;       ///< deepest overlap seen, as a fraction of the smaller radius
   std::size_t escaped = 0;       ///< balls outside the box at the end
   std::vector<Vec2> positions;   ///< m, at the end

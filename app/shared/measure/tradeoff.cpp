@@ -71,21 +71,21 @@ AccuracyRun accuracyRun(const Scene& scene, const TradeoffSetting& setting,
                         const TradeoffSettings& settings) {
   Simulation simulation(scene, configured(setting));
   simulation.setDt(settings.dt);
-  const StateSums initial = simulation.metrics().sums;
-  const double energyScale = initial.kineticEnergy + std::abs(initial.potentialEnergy);
   AccuracyRun run;
   const std::size_t compareStep = stepsFor(settings.compareAt, settings.dt);
   const std::size_t steps = std::max(compareStep, stepsFor(settings.duration, settings.dt));
   for (std::size_t step = 1; step <= steps; ++step) {
     simulation.step();
     const Metrics metrics = simulation.metrics();
-    run.energyError = std::max(run.energyError, std::abs(metrics.energyResidual));
+    // NaN (a scene without energy) stays: std::max would drop it in its second argument.
+    const double energyError = std::abs(relativeEnergyError(metrics));
+    run.energyError =
+        std::isnan(energyError) ? energyError : std::max(run.energyError, energyError);
     run.maxOverlap = std::max(run.maxOverlap, metrics.maxOverlap);
     if (step == compareStep) {
       run.positions.assign(simulation.positions().begin(), simulation.positions().end());
     }
   }
-  run.energyError /= energyScale > 0.0 ? energyScale : 1.0;
   return run;
 }
 

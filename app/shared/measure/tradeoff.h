@@ -49,8 +49,7 @@ struct TradeoffSettings {
 struct TradeoffPoint {
   TradeoffSetting setting;
   double cpuMsPerSimulatedSecond = 0.0;  ///< CPU ms (all threads) per simulated second
-  /// Largest |energy budget residual| over the run (Metrics::energyResidual), relative to
-  /// KE(0) + |PE(0)|.
+  /// Largest |relative energy error| over the run (relativeEnergyError, fooball/metrics.h).
   double energyError = 0.0;
   /// |P(T) − P(0) − M·g·T| relative to Σ m|v(0)|, on the scene with its walls open and no drag,
   /// where nothing but ball–ball collisions and gravity acts on the momentum.

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "chart_image.h"
+#include "fooball/metrics.h"
 #include "offscreen_qt.h"
 
 namespace fooball::plots {
@@ -113,14 +114,20 @@ QString decadeLabel(int exponent, bool negative) {
 }
 
 QChart* residualPanel(const CompareChart& data) {
-  const bool relative = data.energyScale > 0.0;
-  const double scale = relative ? data.energyScale : 1.0;
+  // Relative where every run has an E(0) to be relative to (the runs start from one state).
+  const bool relative =
+      std::all_of(data.curves.begin(), data.curves.end(),
+                  [](const CompareCurve& curve) { return curve.initialEnergy != 0.0; });
+  const auto plotted = [relative](const CompareCurve& curve, std::size_t i) {
+    return relative ? relativeEnergyError(curve.energyResidual[i], curve.initialEnergy)
+                    : curve.energyResidual[i];
+  };
   double leastMagnitude = std::numeric_limits<double>::infinity();
   double mostPositive = 0.0;
   double mostNegative = 0.0;  // as a magnitude
   for (const CompareCurve& curve : data.curves) {
-    for (const double residual : curve.energyResidual) {
-      const double r = residual / scale;
+    for (std::size_t i = 0; i < curve.energyResidual.size(); ++i) {
+      const double r = plotted(curve, i);
       if (!std::isfinite(r) || r == 0.0) continue;
       leastMagnitude = std::min(leastMagnitude, std::abs(r));
       (r > 0.0 ? mostPositive : mostNegative) =
@@ -179,9 +186,8 @@ QChart* residualPanel(const CompareChart& data) {
   yAxis->setGridLineVisible(true);
 
   auto* chart = new QChart;
-  chart->setTitle(relative
-                      ? "Energy residual: E(t) − E(0) − work + drag, relative to |E(0)| of run 0"
-                      : "Energy residual: E(t) − E(0) − work + drag (J)");
+  chart->setTitle(relative ? "Energy residual: E(t) − E(0) − work + drag, relative to |E(0)|"
+                           : "Energy residual: E(t) − E(0) − work + drag (J)");
   chart->legend()->setAlignment(Qt::AlignBottom);
   QValueAxis* xAxis = timeAxis(data.duration);
   chart->addAxis(xAxis, Qt::AlignBottom);
@@ -190,7 +196,7 @@ QChart* residualPanel(const CompareChart& data) {
     const CompareCurve& curve = data.curves[run];
     QLineSeries* line = curveSeries(curve, run);
     for (std::size_t i = 0; i < curve.times.size(); ++i) {
-      const double r = curve.energyResidual[i] / scale;
+      const double r = plotted(curve, i);
       if (std::isfinite(r)) line->append(curve.times[i], transform(r));
     }
     addSeries(chart, line, xAxis, yAxis, true);

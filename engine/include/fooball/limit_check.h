@@ -19,9 +19,8 @@ struct LimitNumbers {
   /// else 0.
   double pileSinkPerSolverStep = 0.0;
   double packingFraction = 0.0;  ///< Σ π r² / box area
-  double energyResidual = 0.0;   ///< J, the energy budget's residual: the method's own error
-  /// J, the energy the run has, or the budget says it should have, whichever is larger.
-  double energyScale = 0.0;
+  /// The method's own error, relativeEnergyError (fooball/metrics.h); NaN where E(0) is 0.
+  double relativeEnergyError = 0.0;
 };
 
 /// Needs the run's backend (its substeps): not while a step is out (Simulation::stepping()).
@@ -29,13 +28,13 @@ LimitNumbers measureLimitNumbers(const Simulation& run);
 
 enum class MethodLimit { Tunnelling, RestingPile, Packing, EnergyError };
 
-/// The share of the energy the residual may reach before the check says so, whatever the cause:
-/// the catch-all for failures no mapped limit explains.
+/// The relative energy error (either sign) the check allows before it says so, whatever the
+/// cause: the catch-all for failures no mapped limit explains.
 inline constexpr double kEnergyErrorLimit = 0.1;
 
 struct CrossedLimit {
   MethodLimit limit;
-  double value = 0.0;       ///< the run's number now (LimitNumbers; the residual's share of E)
+  double value = 0.0;       ///< the run's number now (LimitNumbers; |relative energy error|)
   double boundary = 0.0;    ///< MeasuredBoundary::failsFrom, or kEnergyErrorLimit
   double passesUpTo = 0.0;  ///< the map's last passing point; 0 if none, or the energy error
 };

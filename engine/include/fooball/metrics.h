@@ -50,6 +50,33 @@ struct Metrics {
   double externalWork = 0.0;
   double dragLoss = 0.0;
   double energyResidual = 0.0;
+  /// J, E(0): the run's total energy where its budget began (load, restart), which the
+  /// residual is measured from and relativeEnergyError divides by.
+  double initialEnergy = 0.0;
 };
+
+/// The relative energy error, the one definition every chart, table, warning and tool uses
+/// (docs/accuracy.md, "The relative energy error"): the energy budget's residual (J) over
+/// |E(0)|, the run's own total energy where its budget began, e.g. −0.01 for a method that lost
+/// 1% of the energy the run started with.
+///
+/// Why |E(0)|: it stays fixed over the run, so the number moves only when the method's error
+/// does (a divisor that followed E(t) would shrink the error of a method that pumps energy in:
+/// tripled energy would read 0.67, not 2), and the runs of a group start from one state, so they
+/// share it. For the usual scenes (gravity down or none, balls in the box) it equals
+/// KE(0) + |PE(0)|. Under gravity it includes the potential energy above y = 0, so a resting
+/// pile's number is small beside a scale of its own (the failure map's pile sweep divides by
+/// Σ m·g·r instead: a different quantity with its own name there).
+///
+/// Zero and near zero: NaN when E(0) is 0 (balls at rest without gravity; nothing to be relative
+/// to), which charts leave as a gap, tables print as such and the limit check does not flag;
+/// the residual in joules still says what happened. Near zero there is no floor: the energy of a
+/// scene spans orders of magnitude with its size (the failure map's scale sweep runs from 1e-4 to
+/// 1e4 m, 1e-16 to 1e16 J), so any floor in joules would be wrong at one end; a small E(0) gives
+/// an honest large ratio.
+double relativeEnergyError(double energyResidual, double initialEnergy);
+inline double relativeEnergyError(const Metrics& metrics) {
+  return relativeEnergyError(metrics.energyResidual, metrics.initialEnergy);
+}
 
 }  // namespace fooball

@@ -1,33 +1,37 @@
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
-namespace fooball::elastic {
+namespace fooball::common {
 
 /// Which corner of the box the grid numbers its cells from. The pair search meets the balls in
 /// cell order, and each overlap it separates can push the balls it met before once more, so a
 /// dense gas creeps towards the corner the numbering starts from: numbered always from the lower
 /// left, 2000 balls at packing 0.5 put 0.29 of themselves in the bottom quarter of the box and
-/// 0.21 in the top one (tests/elastic_backend_test.cpp). Numbered from opposite corners on
+/// 0.21 in the top one (tests/elastic_backend_test.cpp). (xpbd numbers from the lower left
+/// always: its projections are no such pushes.) Numbered from opposite corners on
 /// alternate substeps, the pushes cancel.
 enum class CellOrder : bool {
   FromLowerLeft,   ///< row 0 at y = 0, column 0 at x = 0
   FromUpperRight,  ///< row 0 at y = height, column 0 at x = width
 };
 
-/// The broadphase: a uniform grid over the box, and the balls' slots sorted by cell (a counting
-/// sort, O(N), rebuilt every substep). Cells are at least one diameter of the balls they hold
-/// wide, so such a ball's neighbours are in its own and the 8 adjacent cells. Balls too big for
-/// that ("oversized": radius above half a cell) go to one extra cell after the grid's, and are
-/// met by a pass of their own (collideOversized): a grid sized for a few big balls would crowd
-/// dozens of small ones into every cell.
+/// The broadphase of the time-stepped solvers (elastic, xpbd): a uniform grid over the box, and
+/// the balls' slots sorted by cell (a counting sort, O(N), rebuilt every substep). Cells are at
+/// least one diameter of the balls they hold wide, so such a ball's neighbours are in its own and
+/// the 8 adjacent cells. Balls too big for that ("oversized": radius above half a cell) go to one
+/// extra cell after the grid's, and are met by a pass of their own (collideOversized): a grid sized
+/// for a few big balls would crowd dozens of small ones into every cell.
 ///
-/// Built in phases that a team of workers shares: each worker computes the cells of its own
-/// balls (setCell), then counts, prefix-sums and scatters the balls of its own share of the cells.
-/// The result is a pure function of the balls' cells and their CellOrder — slots ascending within
-/// each cell, or descending when numbered from the upper right — whatever the number of workers.
+/// Built in phases that a team of workers shares (one worker does them all in turn): each worker
+/// computes the cells of its own balls (setCell), then counts, prefix-sums and scatters the balls
+/// of its own share of the cells. The result is a pure function of the balls' cells and their
+/// CellOrder — slots ascending within each cell, or descending when numbered from the upper right —
+/// whatever the number of workers.
 ///
 /// Memory: 8 bytes per ball (cell and sorted slot) plus 4 per cell, with at most
 /// kCellsPerBall cells per ball.
@@ -117,4 +121,25 @@ class CellLists {
   std::vector<CellShare> shares_;
 };
 
-}  // namespace fooball::elastic
+/// The radius (m) the grid's cells are sized for, over balls of any type with a `radius` (m):
+/// the largest, unless at most one ball in `ballsPerOversized` is more than twice as big as the
+/// rest — a few big balls among many small ones. Those are then left out of the grid
+/// (oversized), and the cells fit the small balls.
+template <class BallType>
+double gridRadius(std::span<const BallType> balls, std::size_t ballsPerOversized) {
+  if (balls.empty()) return 1.0;
+  double largest = 0.0;
+  for (const BallType& ball : balls)
+    largest = std::max(largest, ball.radius);
+  const std::size_t oversized = balls.size() / ballsPerOversized;  // at most
+  if (oversized == 0) return largest;
+  std::vector<double> radii(balls.size());
+  std::transform(balls.begin(), balls.end(), radii.begin(),
+                 [](const BallType& ball) { return ball.radius; });
+  // The radius that `oversized` balls at most exceed.
+  const auto typical = radii.end() - 1 - static_cast<std::ptrdiff_t>(oversized);
+  std::nth_element(radii.begin(), typical, radii.end());
+  return *typical < 0.5 * largest ? *typical : largest;
+}
+
+}  // namespace fooball::common

@@ -3,19 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "worker_team.h"
+#include "exact_size.h"
+#include "work_share.h"
 
-namespace fooball::elastic {
-
-namespace {
-
-/// Exact sizes, released when a scene shrinks: memory follows the scene.
-void resizeExactly(std::vector<std::uint32_t>& array, std::size_t size) {
-  array.resize(size);
-  array.shrink_to_fit();
-}
-
-}  // namespace
+namespace fooball::common {
 
 void CellLists::layout(std::size_t ballCount, double width, double height, double minCellSize,
                        int workers) {
@@ -101,4 +92,4 @@ std::size_t CellLists::memoryBytes() const {
          shares_.capacity() * sizeof(CellShare);
 }
 
-}  // namespace fooball::elastic
+}  // namespace fooball::common
