@@ -2,22 +2,16 @@
 
 #include <QGridLayout>
 #include <QLabel>
-#include <cmath>
 
-#include "charts/chart_panel.h"
+#include "readable_number.h"
+#include "run_palette.h"
 
 namespace fooball::gui {
 
 namespace {
 
-/// Four significant digits, exponent only when the value is very small or very large.
 QString figure(double value) {
-  if (!std::isfinite(value)) return QStringLiteral("—");
-  const double magnitude = std::abs(value);
-  if (magnitude != 0.0 && (magnitude < 1e-3 || magnitude >= 1e5)) {
-    return QString::number(value, 'e', 2);
-  }
-  return QString::number(value, 'g', 4);
+  return QString::fromStdString(text::figureText(value));
 }
 
 QString signedFigure(double value) {
@@ -108,11 +102,11 @@ void CompareReadout::showRuns(const QStringList& labels, bool baseline) {
 
   const QString referenceLabel = labels.isEmpty() ? QString() : labels.front();
   reference_->setText(tr("difference from <span style='color:%1'>●</span> <b>%2</b> (run 0)")
-                          .arg(ChartPanel::runColour(0).name(), referenceLabel.toHtmlEscaped()));
+                          .arg(colours::runColour(0).name(), referenceLabel.toHtmlEscaped()));
   int gridRow = 1;
   for (int run = 1; run < labels.size(); ++run) {
     const QString html = QStringLiteral("<span style='color:%1'>●</span> %2")
-                             .arg(ChartPanel::runColour(run).name(), labels[run].toHtmlEscaped());
+                             .arg(colours::runColour(run).name(), labels[run].toHtmlEscaped());
     const QString toolTip =
         tr("Run %1, %2, against run 0, %3").arg(run).arg(labels[run], referenceLabel);
     rows_.push_back(addRow(gridRow++, labels[run], html, toolTip, "value"));
@@ -122,7 +116,7 @@ void CompareReadout::showRuns(const QStringList& labels, bool baseline) {
         tr("Run 0 with every ball moved 1e-9 m: a run whose divergence stays near this line is as "
            "close to run 0 as chaos allows");
     const QString html = QStringLiteral("<span style='color:%1'>╌</span> %2")
-                             .arg(ChartPanel::baselineColour().name(), tr("chaos baseline"));
+                             .arg(colours::neutralColour().name(), tr("chaos baseline"));
     rows_.push_back(addRow(gridRow++, tr("chaos baseline"), html, toolTip, "baseline"));
   }
 }

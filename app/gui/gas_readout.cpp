@@ -5,7 +5,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "charts/chart_style.h"
+#include "readable_number.h"
+#include "run_palette.h"
 
 namespace fooball::gui {
 
@@ -20,14 +21,8 @@ constexpr double kKolmogorov95 = 1.358;
 const QString kNoFigure = QStringLiteral("—");
 const QString kNotApplicable = QStringLiteral("n/a");
 
-/// Four significant digits, an exponent only for very small or large values.
 QString figure(double value) {
-  if (!std::isfinite(value)) return kNoFigure;
-  const double magnitude = std::abs(value);
-  if (magnitude != 0.0 && (magnitude < 1e-3 || magnitude >= 1e5)) {
-    return QString::number(value, 'e', 3);
-  }
-  return QString::number(value, 'g', 4);
+  return QString::fromStdString(text::figureText(value));
 }
 
 QString ratio(double measured, double theory) {
@@ -132,7 +127,7 @@ void GasReadout::showRuns(const QStringList& labels) {
 
   for (int run = 0; run < labels.size(); ++run) {
     const QString html = QStringLiteral("<span style='color:%1'>●</span> %2")
-                             .arg(runColour(run).name(), labels[run].toHtmlEscaped());
+                             .arg(colours::runColour(run).name(), labels[run].toHtmlEscaped());
     QLabel* header = cell(html, "value", tr("Run %1: %2").arg(run).arg(labels[run]));
     header->setTextFormat(Qt::RichText);
     grid_->addWidget(header, kHeaderRow, run + 1, Qt::AlignRight);

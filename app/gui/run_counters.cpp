@@ -5,8 +5,8 @@
 #include <QLocale>
 #include <cmath>
 
-#include "charts/chart_panel.h"
 #include "number_format.h"
+#include "run_palette.h"
 
 namespace fooball::gui {
 
@@ -67,7 +67,7 @@ void RunCounters::showRuns(const QStringList& labels) {
     const QString shortLabel = fontMetrics().elidedText(labels[run], Qt::ElideMiddle, kLabelWidth);
     Row row{labels[run],
             new QLabel(QStringLiteral("<span style='color:%1'>●</span> %2")
-                           .arg(ChartPanel::runColour(run).name(), shortLabel.toHtmlEscaped())),
+                           .arg(colours::runColour(run).name(), shortLabel.toHtmlEscaped())),
             rightAligned(kNoFigure, QString()),
             rightAligned(kNoFigure, QString()),
             rightAligned(kNoFigure, QString()),

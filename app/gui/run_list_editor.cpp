@@ -11,9 +11,9 @@
 #include <QVBoxLayout>
 
 #include "backend_options_form.h"
-#include "charts/chart_panel.h"
 #include "fooball/run_group.h"
 #include "registry.h"
+#include "run_palette.h"
 #include "view_text.h"
 
 namespace fooball::gui {
@@ -144,7 +144,7 @@ void RunListEditor::showRuns(const RunGroup& group) {
   }
   for (int run = 0; run < runs; ++run) {
     const Row& row = rows_[std::size_t(run)];
-    const QString colour = ChartPanel::runColour(run).name();
+    const QString colour = colours::runColour(run).name();
     row.title->setText(QStringLiteral("<span style='color:%1'>●</span> %2")
                            .arg(colour, run == 0 ? tr("Run 0") : tr("Run %1").arg(run)));
     row.title->setToolTip(run == 0 ? tr("The reference run") : tr("Compared with run 0"));

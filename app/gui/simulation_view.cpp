@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "charts/chart_panel.h"
 #include "disc_rasterizer.h"
 #include "fooball/drifted_positions.h"
 #include "fooball/presets.h"
 #include "fooball/simulation.h"
 #include "number_format.h"
 #include "run_controller.h"
+#include "run_palette.h"
 #include "view_text.h"
 
 namespace fooball::gui {
@@ -373,7 +373,7 @@ void SimulationView::paintBalls(QPainter& painter, const Panel& panel, std::size
   }
   for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex) {
     const Simulation& other = runs_.run(runIndex);
-    const QRgb outline = ChartPanel::runColour(runIndex).rgb();
+    const QRgb outline = colours::runColour(runIndex).rgb();
     const auto otherPositions = drawnPositions(runIndex);
     const auto otherRadii = other.radii();
     for (std::size_t i = 0; i < otherPositions.size(); ++i) {
@@ -518,7 +518,7 @@ void SimulationView::paintCentreOfMass(QPainter& painter, const Panel& panel) co
   };
   mark(panel.runIndex, Qt::white);
   for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex)
-    mark(runIndex, ChartPanel::runColour(runIndex));
+    mark(runIndex, colours::runColour(runIndex));
 }
 
 void SimulationView::paintSelection(QPainter& painter, const Panel& panel) const {
@@ -540,7 +540,7 @@ void SimulationView::paintSelection(QPainter& painter, const Panel& panel) const
   };
   ring(panel.runIndex, Qt::white);
   for (int runIndex = 1; panel.overlay && runIndex < runs_.runCount(); ++runIndex)
-    ring(runIndex, ChartPanel::runColour(runIndex));
+    ring(runIndex, colours::runColour(runIndex));
 }
 
 void SimulationView::paintCaptions(QPainter& painter, const std::vector<Caption>& captions) const {
@@ -552,7 +552,7 @@ void SimulationView::paintCaptions(QPainter& painter, const std::vector<Caption>
     switch (caption.kind) {
       case Caption::Kind::RunEntry:
       case Caption::Kind::TileLabel: {
-        const QColor colour = ChartPanel::runColour(caption.runIndex);
+        const QColor colour = colours::runColour(caption.runIndex);
         const QPointF swatch(inner.left() + kSwatchWidth / 2.0 - 3.0, pill.center().y());
         const bool outline = caption.kind == Caption::Kind::RunEntry && caption.runIndex > 0;
         painter.setPen(outline ? QPen(colour, 2.0) : QPen(Qt::NoPen));
@@ -600,7 +600,7 @@ void SimulationView::paintCaptions(QPainter& painter, const std::vector<Caption>
         QRectF text = inner;
         if (runs_.runCount() > 1) {
           // The run's colour, filled or outlined as its balls are drawn.
-          const QColor colour = ChartPanel::runColour(caption.runIndex);
+          const QColor colour = colours::runColour(caption.runIndex);
           const QPointF swatch(inner.left() + kSwatchWidth / 2.0 - 3.0, pill.center().y());
           painter.setPen(caption.runIndex > 0 ? QPen(colour, 2.0) : QPen(Qt::NoPen));
           painter.setBrush(caption.runIndex > 0 ? QBrush(Qt::NoBrush) : QBrush(colour));

@@ -13,6 +13,7 @@
 #include "fooball/speed_distribution.h"
 #include "gas_readout.h"
 #include "gui_fixture.h"
+#include "run_palette.h"
 #include "statistics_panel.h"
 #include "window_actions.h"
 
@@ -119,7 +120,7 @@ TEST_F(StatisticsDock, HistogramsCountEveryBallOfEveryRunAsTheEngineDoesInTheRun
         << "run " << run << ": every ball in a bin";
     EXPECT_EQ(counts, speedHistogram(runs().run(run).velocities(), counts.size(), range).counts)
         << "run " << run;
-    EXPECT_EQ(histogram().histogramPen(run).color(), runColour(run));
+    EXPECT_EQ(histogram().histogramPen(run).color(), colours::runColour(run));
     EXPECT_EQ(histogram().histogramName(run), runs().label(run));
     EXPECT_EQ(histogram().speedRange().second, range) << "the bins span the speed axis";
   }
