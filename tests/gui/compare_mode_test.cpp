@@ -16,16 +16,16 @@
 #include <thread>
 #include <vector>
 
-#include "backend_options_form.h"
 #include "chart_reading.h"
 #include "charts/chart_panel.h"
-#include "compare_readout.h"
 #include "fooball/number_text.h"
 #include "gui_fixture.h"
-#include "run_counters.h"
-#include "run_list_editor.h"
-#include "settings_sidebar.h"
-#include "window_actions.h"
+#include "readouts/compare_readout.h"
+#include "readouts/run_counters.h"
+#include "sidebar/backend_options_form.h"
+#include "sidebar/run_list_editor.h"
+#include "sidebar/settings_sidebar.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -17,11 +17,11 @@
 
 #include "decoded_video.h"
 #include "fooball_process.h"
-#include "frame_loop.h"
+#include "frames/frame_loop.h"
 #include "gui_fixture.h"
 #include "recording/record_dialog.h"
 #include "recording/recording_session.h"
-#include "window_actions.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui {
 namespace {

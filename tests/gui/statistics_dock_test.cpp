@@ -11,11 +11,11 @@
 #include "charts/speed_histogram_chart.h"
 #include "fooball/presets.h"
 #include "fooball/speed_distribution.h"
-#include "gas_readout.h"
 #include "gui_fixture.h"
+#include "readouts/gas_readout.h"
+#include "readouts/statistics_panel.h"
 #include "run_palette.h"
-#include "statistics_panel.h"
-#include "window_actions.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

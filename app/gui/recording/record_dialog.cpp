@@ -13,9 +13,9 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "frame_loop.h"
-#include "main_window.h"
+#include "frames/frame_loop.h"
 #include "video_format.h"
+#include "window/main_window.h"
 
 namespace fooball::gui {
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "charts/chart_panel.h"
-#include "main_window.h"
-#include "simulation_view.h"
+#include "view/simulation_view.h"
+#include "window/main_window.h"
 
 namespace fooball::gui {
 

@@ -1,8 +1,8 @@
 #include "recording_session.h"
 
-#include "frame_loop.h"
-#include "main_window.h"
-#include "run_controller.h"
+#include "frames/frame_loop.h"
+#include "run/run_controller.h"
+#include "window/main_window.h"
 
 namespace fooball::gui {
 
