@@ -11,6 +11,7 @@
 #include "charts/speed_histogram_chart.h"
 #include "fooball/presets.h"
 #include "fooball/speed_distribution.h"
+#include "frames/run_feed.h"
 #include "gui_fixture.h"
 #include "readouts/gas_readout.h"
 #include "readouts/statistics_panel.h"
@@ -109,7 +110,7 @@ TEST_F(StatisticsDock, HistogramsCountEveryBallOfEveryRunAsTheEngineDoesInTheRun
   open(loadPreset("gas"), "elastic", {"exact", "box2d"});
   openDock();
   frames(90);
-  window->showStatistics();  // now, so that the runs are where they were measured
+  window->feed().showStatistics();  // now, so that the runs are where they were measured
   ASSERT_EQ(histogram().histogramCount(), 3);
   for (int run = 0; run < 3; ++run) {
     const std::vector<std::size_t> counts = drawnCounts(run);
@@ -138,7 +139,7 @@ TEST_F(StatisticsDock, TemperatureReadsTheEnginesToTheDigitsShown) {
   open(loadPreset("gas"), "elastic", {"exact"});
   openDock();
   frames(30);
-  window->showStatistics();
+  window->feed().showStatistics();
   for (int run = 0; run < 2; ++run) {
     const Simulation& simulation = runs().run(run);
     const double kT = kineticTemperature(simulation.masses(), simulation.velocities());
@@ -155,7 +156,7 @@ TEST_F(StatisticsDock, SaysWhenTheTheoryDoesNotApply) {
   open(loadPreset("gas"));
   openDock();
   frames(60);
-  window->showStatistics();
+  window->feed().showStatistics();
   GasReadout& readout = *statistics().readout();
   EXPECT_TRUE(readout.caveat().isEmpty());
   EXPECT_NE(readout.text(GasReadout::kPressureRatio, 0), QStringLiteral("n/a"));
@@ -165,7 +166,7 @@ TEST_F(StatisticsDock, SaysWhenTheTheoryDoesNotApply) {
     world.gravity = {0.0, -9.81};
     group.setWorld(world);
   });
-  window->showStatistics();
+  window->feed().showStatistics();
   EXPECT_TRUE(readout.caveat().contains(QStringLiteral("gravity")))
       << readout.caveat().toStdString();
   for (const GasReadout::Row row : {GasReadout::kHendersonPressure, GasReadout::kPressureRatio,

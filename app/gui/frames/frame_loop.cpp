@@ -5,9 +5,9 @@
 #include <cmath>
 #include <utility>
 
+#include "frames/run_feed.h"
 #include "run/run_controller.h"
 #include "view/simulation_view.h"
-#include "window/main_window.h"
 
 namespace fooball::gui {
 
@@ -25,7 +25,8 @@ constexpr int kFramesPerStatistics = 15;
 
 }  // namespace
 
-FrameLoop::FrameLoop(MainWindow& window) : QObject(&window), window_(window) {
+FrameLoop::FrameLoop(RunController& runs, QWidget& view, RunFeed& feed, QObject* parent)
+    : QObject(parent), runs_(runs), view_(view), feed_(feed) {
   timer_ = new QTimer(this);
   timer_->setTimerType(Qt::PreciseTimer);
   timer_->setInterval(kFrameIntervalMs);
@@ -51,13 +52,13 @@ void FrameLoop::setFixedFrameRate(double framesPerSecond, std::function<void()> 
 
 void FrameLoop::advance(double elapsedSeconds) {
   advanceWith([&](const std::function<void()>& whileFirstStepRuns) {
-    return window_.runs().advance(elapsedSeconds, timeScale_, whileFirstStepRuns);
+    return runs_.advance(elapsedSeconds, timeScale_, whileFirstStepRuns);
   });
 }
 
 void FrameLoop::advanceExactly(double frameSeconds) {
   advanceWith([&](const std::function<void()>& whileFirstStepRuns) {
-    return window_.runs().advanceExactly(frameSeconds * timeScale_, whileFirstStepRuns);
+    return runs_.advanceExactly(frameSeconds * timeScale_, whileFirstStepRuns);
   });
 }
 
@@ -71,7 +72,7 @@ void FrameLoop::advanceWith(const std::function<int(const std::function<void()>&
   bool overlapped = false;
   const int steps = stepRuns([&] {
     showDueMeasurements();
-    window_.view()->repaint();
+    view_.repaint();
     overlapped = true;
   });
   frameRate_.addFrame(steps);
@@ -79,7 +80,7 @@ void FrameLoop::advanceWith(const std::function<int(const std::function<void()>&
   if (!overlapped) {
     // No step ran beside this frame (paused, or a slow step collected): nothing to wait for.
     showDueMeasurements();
-    window_.view()->update();
+    view_.update();
   }
 }
 
@@ -99,12 +100,12 @@ void FrameLoop::countSteppedFrame() {
 }
 
 void FrameLoop::showDueMeasurements() {
-  if (std::exchange(sampleDue_, false)) window_.sampleCharts();
+  if (std::exchange(sampleDue_, false)) feed_.sampleCharts();
   if (std::exchange(readoutDue_, false)) {
-    window_.showReadouts();
-    if (window_.runs().group().selected()) window_.showSelectedBall();
+    feed_.showReadouts();
+    if (runs_.group().selected()) feed_.showSelectedBall();
   }
-  if (std::exchange(statisticsDue_, false)) window_.showStatistics();
+  if (std::exchange(statisticsDue_, false)) feed_.showStatistics();
 }
 
 void FrameLoop::start() {

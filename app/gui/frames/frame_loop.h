@@ -7,10 +7,12 @@
 #include "run/frame_rate.h"
 
 class QTimer;
+class QWidget;
 
 namespace fooball::gui {
 
-class MainWindow;
+class RunController;
+class RunFeed;
 
 /// The window's frames: a ~60 Hz timer that turns elapsed real time (times the speed slider)
 /// into physics steps; while the first of them runs, it draws the balls and feeds the charts
@@ -20,7 +22,8 @@ class FrameLoop : public QObject {
   Q_OBJECT
 
  public:
-  explicit FrameLoop(MainWindow& window);
+  /// Steps `runs`, draws `view` and feeds `feed`; a child of `parent`.
+  FrameLoop(RunController& runs, QWidget& view, RunFeed& feed, QObject* parent);
 
   /// One frame: the steps `elapsedSeconds` of real time hold, with the balls drawn and the
   /// samples, readouts and statistics that earlier frames made due shown (all from the state
@@ -63,7 +66,9 @@ class FrameLoop : public QObject {
   /// call while the first runs, and returns how many.
   void advanceWith(const std::function<int(const std::function<void()>&)>& stepRuns);
 
-  MainWindow& window_;
+  RunController& runs_;
+  QWidget& view_;
+  RunFeed& feed_;
   QTimer* timer_;
   QElapsedTimer clock_;
   FrameRate frameRate_;

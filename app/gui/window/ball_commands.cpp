@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "fooball/ball_problem.h"
+#include "frames/run_feed.h"
 #include "run/run_controller.h"
 #include "sidebar/ball_inspector.h"
 #include "sidebar/settings_sidebar.h"
@@ -125,8 +126,8 @@ void undoOrRedo(MainWindow& window, bool undo) {
   } else {
     stack.redo();
   }
-  window.markChange(text);
-  window.showSelectedBall();
+  window.feed().markChange(text);
+  window.feed().showSelectedBall();
 }
 
 }  // namespace
@@ -140,7 +141,7 @@ void editBall(MainWindow& window, std::size_t index, const BallDef& edited) {
     window.undoStack()->push(new EditCommand(window, index, std::move(saved),
                                              window.runs().group().ballStates(index),
                                              editText(index, before, after)));
-    window.markChange(QObject::tr("ball #%1 edited").arg(index));
+    window.feed().markChange(QObject::tr("ball #%1 edited").arg(index));
   } catch (const SceneError& error) {
     const auto* refused = dynamic_cast<const BallError*>(&error);
     const QString message =
@@ -149,7 +150,7 @@ void editBall(MainWindow& window, std::size_t index, const BallDef& edited) {
     inspector->showError(message);
     window.showStatus(message);
   }
-  window.showSelectedBall();
+  window.feed().showSelectedBall();
 }
 
 void deleteBall(MainWindow& window, std::size_t index) {
@@ -157,7 +158,7 @@ void deleteBall(MainWindow& window, std::size_t index) {
   window.runs().deleteBall(index);
   window.undoStack()->push(new DeleteCommand(window, index, std::move(saved),
                                              QObject::tr("delete of ball %1").arg(index)));
-  window.markChange(QObject::tr("ball #%1 deleted").arg(index));
+  window.feed().markChange(QObject::tr("ball #%1 deleted").arg(index));
 }
 
 void undoBallChange(MainWindow& window) {

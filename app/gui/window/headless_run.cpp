@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "charts/chart_panel.h"
+#include "frames/run_feed.h"
 #include "readouts/compare_readout.h"
 #include "run/run_controller.h"
 #include "view/simulation_view.h"
@@ -129,7 +130,7 @@ int runHeadless(MainWindow& window, int frames, const std::optional<QString>& sc
   if (screenshotPath) {
     window.updateStatusBar();
     window.charts()->refresh();
-    window.showStatistics();
+    window.feed().showStatistics();
     QApplication::processEvents();
     if (!window.grab().save(*screenshotPath, "PNG")) {
       std::cerr << "fooball: error: could not write " << screenshotPath->toStdString() << '\n';

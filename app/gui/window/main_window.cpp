@@ -18,8 +18,8 @@
 #include "charts/chart_panel.h"
 #include "fooball/presets.h"
 #include "frames/frame_loop.h"
+#include "frames/run_feed.h"
 #include "readouts/compare_readout.h"
-#include "readouts/run_counters.h"
 #include "readouts/statistics_panel.h"
 #include "readouts/status_panel.h"
 #include "readouts/timeline_bar.h"
@@ -27,9 +27,9 @@
 #include "sidebar/ball_inspector.h"
 #include "sidebar/run_list_editor.h"
 #include "sidebar/settings_sidebar.h"
-#include "sidebar/sidebar_wiring.h"
 #include "view/simulation_view.h"
 #include "widgets/number_field_keys.h"
+#include "window/sidebar_wiring.h"
 #include "window/window_actions.h"
 #include "window/window_settings.h"
 
@@ -38,9 +38,6 @@ namespace fooball::gui {
 namespace {
 
 constexpr int kStatusMessageMs = 8000;
-/// Changes of one setting closer together than this (ms) are one gesture: a slider's drag sends
-/// one every few ms, a user's separate changes are seconds apart.
-constexpr qint64 kGestureGapMs = 700;
 constexpr int kSidebarWidth = 300;        // px
 constexpr QSize kDefaultSize{1440, 900};  // px, before it is fitted to the screen
 /// The charts' first height: a quarter of the window's, and 30 px more from a window 900 px tall
@@ -79,7 +76,9 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   createDocks();
   defaultLayout_ = saveState();
   undoStack_ = new QUndoStack(this);
-  frames_ = new FrameLoop(*this);
+  feed_ = std::make_unique<RunFeed>(
+      *runs_, RunFeed::Targets{*charts_, *compareReadout_, *sidebar_, *sidebarDock_, *statistics_});
+  frames_ = new FrameLoop(*runs_, *view_, *feed_, this);
   actions_ = new WindowActions(*this);
   new NumberFieldKeys(*this, *view_);  // Space and '.' reach the actions from a number field
   status_ = new StatusPanel(*statusBar(), *runs_, frames_->frameRate());
@@ -162,7 +161,10 @@ void MainWindow::createDocks() {
   });
   // Shown, or brought to the front of its tabs: measure at once rather than at the next refresh.
   connect(statisticsDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-    if (visible) QMetaObject::invokeMethod(this, &MainWindow::showStatistics, Qt::QueuedConnection);
+    if (visible) {
+      QMetaObject::invokeMethod(
+          this, [this] { feed_->showStatistics(); }, Qt::QueuedConnection);
+    }
   });
 }
 
@@ -174,21 +176,21 @@ void MainWindow::connectRuns() {
     view_->update();
     // The readouts show the state paused on, not the one of their last refresh, frames before.
     if (paused) {
-      showReadouts();
-      showSelectedBall();
+      feed_->showReadouts();
+      feed_->showSelectedBall();
     }
   });
   connect(runs_.get(), &RunController::selectionChanged, this,
           [this](std::optional<std::size_t> index) {
             actions_->deleteBall()->setEnabled(index.has_value());
-            showSelectedBall();
+            feed_->showSelectedBall();
             if (index) sidebarScroll_->ensureWidgetVisible(sidebar_->inspector());
             view_->update();
           });
   connect(runs_.get(), &RunController::ballsChanged, this, [this] {
     sidebar_->showBallCount(runs_->group().ballCount());
-    showSelectedBall();
-    showReadouts();
+    feed_->showSelectedBall();
+    feed_->showReadouts();
     view_->update();
   });
   connect(runs_.get(), &RunController::runsChanged, this, [this] {
@@ -198,21 +200,20 @@ void MainWindow::connectRuns() {
     view_->update();
   });
   connect(runs_.get(), &RunController::optionsChanged, this, [this](int index) {
-    charts_->renameRun(index, runs_->label(index));
-    compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
+    feed_->renameRun(index);
+    feed_->showLabels();
     updateTitle();
     updateStatusBar();
   });
   connect(runs_.get(), &RunController::rewound, this, [this](double time) {
-    charts_->dropAfter(time);  // the charts end where the runs are now
-    sampleCharts();
-    showReadouts();
-    showSelectedBall();
+    feed_->dropAfter(time);  // the charts end where the runs are now
+    feed_->showReadouts();
+    feed_->showSelectedBall();
     updateStatusBar();
     view_->update();
   });
   connect(runs_.get(), &RunController::runsRestarted, this, [this](double time) {
-    charts_->addMarker(time, tr("runs restarted identical"));
+    feed_->markAt(time, tr("runs restarted identical"));
     showStatus(tr("Every run restarted from run 0's state at t = %1 s, so that all start "
                   "identical; the charts keep their history")
                    .arg(time, 0, 'f', 2));
@@ -236,33 +237,7 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 
 void MainWindow::showRuns() {
   sidebar_->runList()->showRuns(runs_->group());
-  compareReadout_->setVisible(runs_->comparing() || runs_->group().hasBaseline());
-  compareReadout_->showRuns(runs_->labels(), runs_->group().hasBaseline());
-  sidebar_->counters()->showRuns(runs_->labels());
-  statistics_->showRuns(runs_->labels());
-  showReadouts();
-}
-
-void MainWindow::showReadouts() {
-  const RunGroup& group = runs_->group();
-  if (!compareReadout_->isHidden()) {
-    std::vector<Divergence> divergences;
-    for (std::size_t i = 0; i < group.runCount(); ++i)
-      divergences.push_back(group.divergence(i));
-    compareReadout_->showDivergences(divergences, group.baselineDivergence());
-  }
-  // The deepest-overlap search is O(N log N): only for a table someone can see.
-  RunCounters* counters = sidebar_->counters();
-  if (!sidebarDock_->isHidden() && counters->isVisible()) {
-    std::vector<Metrics> metrics;
-    for (std::size_t i = 0; i < group.runCount(); ++i)
-      metrics.push_back(group.run(i).metrics());
-    counters->showMetrics(metrics);
-  }
-}
-
-void MainWindow::showStatistics() {
-  statistics_->refresh(runs_->group());
+  feed_->showRuns();
 }
 
 void MainWindow::syncSidebar() {
@@ -279,45 +254,12 @@ void MainWindow::syncSidebar() {
                         view_->centreOfMass());
   sidebar_->runList()->showCompareLayout(view_->compareLayout());
   showRuns();
-  showSelectedBall();
-}
-
-void MainWindow::showSelectedBall() {
-  const auto selected = runs_->group().selected();
-  sidebar_->showSelection(selected, selected ? runs_->group().ball(*selected) : BallDef{});
+  feed_->showSelectedBall();
 }
 
 void MainWindow::resetCharts() {
-  charts_->reset(runs_->labels());
-  charts_->setBaselineShown(runs_->group().hasBaseline());
   frames_->restartSampling();
-  sampleCharts();
-  statistics_->restart();
-  showStatistics();
-}
-
-void MainWindow::sampleCharts() {
-  // No chart plots the overlap or the escaped count: the counters table computes them.
-  const RunGroup& group = runs_->group();
-  for (std::size_t i = 0; i < group.runCount(); ++i) {
-    charts_->addSample(int(i), group.run(i).metrics(GeometryChecks::Skip), group.divergence(i));
-  }
-  if (const Simulation* baseline = group.baseline()) {
-    charts_->addBaselineSample(baseline->metrics(GeometryChecks::Skip),
-                               *group.baselineDivergence());
-  }
-}
-
-void MainWindow::markChange(const QString& label, const QString& gesture) {
-  const bool continues = !gesture.isEmpty() && gesture == lastGesture_ && gestureClock_.isValid() &&
-                         gestureClock_.elapsed() < kGestureGapMs;
-  if (continues) {
-    charts_->replaceNewestMarker(runs_->group().time(), label);
-  } else {
-    charts_->addMarker(runs_->group().time(), label);
-  }
-  lastGesture_ = gesture;
-  gestureClock_.start();
+  feed_->restart();
 }
 
 void MainWindow::showStatus(const QString& message) {

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 #include <functional>
 #include <memory>
@@ -20,6 +19,7 @@ class ChartPanel;
 class CompareReadout;
 class FrameLoop;
 class RunController;
+class RunFeed;
 class SettingsSidebar;
 class SimulationView;
 class StatisticsPanel;
@@ -66,6 +66,8 @@ class MainWindow : public QMainWindow {
   StatisticsPanel* statistics() const { return statistics_; }
   WindowActions& actions() const { return *actions_; }
   FrameLoop& frames() const { return *frames_; }
+  /// The runs' state into the charts, readouts, counters, statistics and change markers.
+  RunFeed& feed() const { return *feed_; }
   StatusPanel& status() const { return *status_; }
   TimelineBar& timeline() const { return *timeline_; }
   QDockWidget* sidebarDock() const { return sidebarDock_; }
@@ -100,23 +102,11 @@ class MainWindow : public QMainWindow {
   /// One frame (FrameLoop::advance): physics for `elapsedSeconds` of real time (times the
   /// speed slider), the charts' samples and a repaint request.
   void advanceFrame(double elapsedSeconds);
-  /// Feeds every run's metrics and divergence to the charts now.
-  void sampleCharts();
-  /// Shows every run's divergence in the compare readout and its counters in the sidebar now
-  /// (also while paused), each only while it is on screen.
-  void showReadouts();
-  /// Measures and draws the gas statistics now, if their dock is on screen (nothing otherwise).
-  void showStatistics();
   /// Real-time frames from a timer (the interactive app; --frames drives advanceFrame itself).
   void startLiveUpdates();
   void updateStatusBar();
 
-  /// A vertical mark on the charts' time axis at the time of now. Changes of one `gesture`
-  /// ("gravity": a slider dragged through many values) in quick succession are one marker, which
-  /// moves along and shows the latest value.
-  void markChange(const QString& label, const QString& gesture = {});
   void showStatus(const QString& message);
-  void showSelectedBall();
   /// Brings every control in line with the runs (after a load or reset).
   void syncSidebar();
   /// The run list, the readout and the title after runs changed.
@@ -142,12 +132,9 @@ class MainWindow : public QMainWindow {
   bool rememberSettings_;
   QString presetName_;
   QString sourceName_;
-  bool docksSized_ = false;  ///< the docks got their first size (or a remembered layout)
-  bool shownOnce_ = false;   ///< shown before: the frame fit (keepFullyOnScreen) is done
-  QByteArray defaultLayout_;
-  QString lastGesture_;         ///< markChange's, while it may go on
-  QElapsedTimer gestureClock_;  ///< since its last change  ///< saveState() of the docks as
-                                ///< created, for View → Reset layout
+  bool docksSized_ = false;   ///< the docks got their first size (or a remembered layout)
+  bool shownOnce_ = false;    ///< shown before: the frame fit (keepFullyOnScreen) is done
+  QByteArray defaultLayout_;  ///< saveState() of the docks as created, for View → Reset layout
 
   SimulationView* view_ = nullptr;
   CompareReadout* compareReadout_ = nullptr;
@@ -161,6 +148,7 @@ class MainWindow : public QMainWindow {
   WindowActions* actions_ = nullptr;
   StatusPanel* status_ = nullptr;
   TimelineBar* timeline_ = nullptr;
+  std::unique_ptr<RunFeed> feed_;
   FrameLoop* frames_ = nullptr;
   QUndoStack* undoStack_ = nullptr;
 

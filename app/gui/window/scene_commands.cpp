@@ -12,6 +12,7 @@
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
+#include "frames/run_feed.h"
 #include "registry.h"
 #include "run/run_controller.h"
 #include "sidebar/settings_sidebar.h"
@@ -94,7 +95,7 @@ bool setBallCount(MainWindow& window, std::size_t count) {
   }
   if (count != before) {
     window.undoStack()->clear();  // balls renumbered or gone (MainWindow::undoStack)
-    window.markChange(QObject::tr("%1 balls").arg(count));
+    window.feed().markChange(QObject::tr("%1 balls").arg(count));
   }
   const double scale = window.runs().group().newBallScale();
   if (count > before && scale < 1.0) {

@@ -9,11 +9,11 @@
 #include <QUndoStack>
 
 #include "charts/chart_panel.h"
+#include "frames/run_feed.h"
 #include "recording/record_dialog.h"
 #include "run/run_controller.h"
 #include "sidebar/run_list_editor.h"
 #include "sidebar/settings_sidebar.h"
-#include "sidebar/sidebar_wiring.h"
 #include "tools/benchmark_dialog.h"
 #include "tools/failure_map_dialog.h"
 #include "tools/tradeoff_dialog.h"
@@ -22,6 +22,7 @@
 #include "window/help_dialogs.h"
 #include "window/main_window.h"
 #include "window/scene_commands.h"
+#include "window/sidebar_wiring.h"
 
 namespace fooball::gui {
 
@@ -61,10 +62,10 @@ void WindowActions::createActions() {
   });
   connect(step_, &QAction::triggered, this, [this] {
     window_.runs().stepOnce();
-    window_.sampleCharts();
-    window_.showReadouts();
-    window_.showStatistics();
-    window_.showSelectedBall();
+    window_.feed().sampleCharts();
+    window_.feed().showReadouts();
+    window_.feed().showStatistics();
+    window_.feed().showSelectedBall();
     window_.view()->update();
     window_.updateStatusBar();
   });

@@ -1,4 +1,4 @@
-#include "sidebar/sidebar_wiring.h"
+#include "window/sidebar_wiring.h"
 
 #include <QStringList>
 #include <stdexcept>
@@ -6,6 +6,7 @@
 #include "charts/chart_panel.h"
 #include "fooball/number_text.h"
 #include "frames/frame_loop.h"
+#include "frames/run_feed.h"
 #include "readouts/status_panel.h"
 #include "run/run_controller.h"
 #include "sidebar/ball_inspector.h"
@@ -71,8 +72,8 @@ void applyGravity(MainWindow& window, double magnitude) {
     direction = loaded / length(loaded);
   }
   changeWorld(window, [&](WorldSettings& world) { world.gravity = magnitude * direction; });
-  window.markChange(QObject::tr("gravity %1 m/s²").arg(formatNumber(magnitude)),
-                    QStringLiteral("gravity"));
+  window.feed().markChange(QObject::tr("gravity %1 m/s²").arg(formatNumber(magnitude)),
+                           QStringLiteral("gravity"));
 }
 
 /// A new run; every run restarts from run 0's state (RunController::runsRestarted marks it).
@@ -85,18 +86,16 @@ void addRun(MainWindow& window, const RunSpec& spec) {
     window.showStatus(QString::fromStdString(error.what()));
     return;
   }
-  window.charts()->addRun(runs.labels().back());
   if (!wasComparing) runs.setBaseline(true);  // compare mode shows chaos unless hidden
-  window.charts()->setBaselineShown(runs.group().hasBaseline());
-  window.sampleCharts();
+  window.feed().addRun();
   window.showRuns();
 }
 
 void removeRun(MainWindow& window, int index) {
   if (window.runs().runCount() < 2) return;
   window.runs().removeRun(index);
-  window.charts()->removeRun(index);
-  window.markChange(QObject::tr("run %1 removed").arg(index));
+  window.feed().removeRun(index);
+  window.feed().markChange(QObject::tr("run %1 removed").arg(index));
 }
 
 /// Run `index` continues on `backend` (its default options) from its own state.
@@ -110,8 +109,8 @@ void setRunBackend(MainWindow& window, int index, const QString& backend) {
     window.showRuns();
     return;
   }
-  window.charts()->renameRun(index, runs.label(index));
-  window.markChange(QObject::tr("run %1 → %2").arg(index).arg(backend));
+  window.feed().renameRun(index);
+  window.feed().markChange(QObject::tr("run %1 → %2").arg(index).arg(backend));
 }
 
 void wireRunList(MainWindow& window) {
@@ -123,25 +122,25 @@ void wireRunList(MainWindow& window) {
   });
   QObject::connect(list, &RunListEditor::removeRunRequested, &window,
                    [&window](int run) { removeRun(window, run); });
-  QObject::connect(list, &RunListEditor::optionChanged, &window,
-                   [&window](int run, const QString& name, double value) {
-                     try {
-                       window.runs().setBackendOption(run, name, value);
-                       // The value as the run spec has it: "substeps = 8", "rest_bounce_time =
-                       // 1e-06".
-                       window.markChange(QStringLiteral("%1 = %2").arg(
-                                             name, QString::fromStdString(exactNumberText(value))),
-                                         QStringLiteral("run %1 %2").arg(run).arg(name));
-                     } catch (const std::invalid_argument& error) {
-                       window.showStatus(QString::fromStdString(error.what()));
-                       window.sidebar()->runList()->showRuns(window.runs().group());
-                     }
-                   });
+  QObject::connect(
+      list, &RunListEditor::optionChanged, &window,
+      [&window](int run, const QString& name, double value) {
+        try {
+          window.runs().setBackendOption(run, name, value);
+          // The value as the run spec has it: "substeps = 8", "rest_bounce_time =
+          // 1e-06".
+          window.feed().markChange(
+              QStringLiteral("%1 = %2").arg(name, QString::fromStdString(exactNumberText(value))),
+              QStringLiteral("run %1 %2").arg(run).arg(name));
+        } catch (const std::invalid_argument& error) {
+          window.showStatus(QString::fromStdString(error.what()));
+          window.sidebar()->runList()->showRuns(window.runs().group());
+        }
+      });
   QObject::connect(list, &RunListEditor::baselineToggled, &window, [&window](bool on) {
     window.runs().setBaseline(on);
-    window.charts()->setBaselineShown(on);
-    window.sampleCharts();
-    window.markChange(on ? QObject::tr("baseline on") : QObject::tr("baseline off"));
+    window.feed().showBaseline(on);
+    window.feed().markChange(on ? QObject::tr("baseline on") : QObject::tr("baseline off"));
   });
   QObject::connect(list, &RunListEditor::compareLayoutChosen, &window,
                    [&window](CompareLayout layout) {
@@ -179,27 +178,28 @@ void wireSidebar(MainWindow& window) {
                    [w](double magnitude) { applyGravity(*w, magnitude); });
   QObject::connect(s, &SettingsSidebar::airResistanceChosen, w, [w](double coefficient) {
     changeWorld(*w, [&](WorldSettings& world) { world.airResistance = coefficient; });
-    w->markChange(QObject::tr("air resistance %1 1/s").arg(formatNumber(coefficient)),
-                  QStringLiteral("air resistance"));
+    w->feed().markChange(QObject::tr("air resistance %1 1/s").arg(formatNumber(coefficient)),
+                         QStringLiteral("air resistance"));
   });
   QObject::connect(s, &SettingsSidebar::strengthChosen, w, [w](double strength) {
     w->runs().changeTools([&](RunGroup& group) { group.setStrength(strength); });
-    w->markChange(QObject::tr("mouse strength %1").arg(formatNumber(strength)),
-                  QStringLiteral("mouse strength"));
+    w->feed().markChange(QObject::tr("mouse strength %1").arg(formatNumber(strength)),
+                         QStringLiteral("mouse strength"));
   });
   QObject::connect(s, &SettingsSidebar::timeScaleChosen, w, [w](double timeScale) {
     w->frames().setTimeScale(timeScale);
-    w->markChange(QObject::tr("speed %1×").arg(formatNumber(timeScale)), QStringLiteral("speed"));
+    w->feed().markChange(QObject::tr("speed %1×").arg(formatNumber(timeScale)),
+                         QStringLiteral("speed"));
   });
   QObject::connect(s, &SettingsSidebar::resetSlidersRequested, w, [w] { resetSliders(*w); });
   QObject::connect(s, &SettingsSidebar::ballCollisionsToggled, w, [w](bool on) {
     changeWorld(*w, [&](WorldSettings& world) { world.ballCollisions = on; });
-    w->markChange(on ? QObject::tr("collisions on") : QObject::tr("collisions off"));
+    w->feed().markChange(on ? QObject::tr("collisions on") : QObject::tr("collisions off"));
   });
   QObject::connect(s, &SettingsSidebar::wallsChosen, w, [w](const Walls& walls) {
     const QString label = wallsChangeLabel(w->runs().group().world().walls, walls);
     changeWorld(*w, [&](WorldSettings& world) { world.walls = walls; });
-    w->markChange(label);
+    w->feed().markChange(label);
     w->view()->update();
   });
 
@@ -237,7 +237,7 @@ void wireView(MainWindow& window) {
       return;
     }
     w->runs().changeTools([&](RunGroup& group) { group.pressTool(point); });
-    w->markChange(modeName(w->runs().group().interactions().mode));
+    w->feed().markChange(modeName(w->runs().group().interactions().mode));
   });
   QObject::connect(view, &SimulationView::toolMoved, w, [w](Vec2 point) {
     w->runs().changeTools([&](RunGroup& group) { group.moveTool(point); });
@@ -248,7 +248,7 @@ void wireView(MainWindow& window) {
   QObject::connect(view, &SimulationView::attractorPlaced, w, [w](Vec2 point) {
     w->runs().changeTools([&](RunGroup& group) { group.addAttractor(point); });
     w->sidebar()->showAttractorCount(w->runs().group().interactions().attractors().size());
-    w->markChange(QObject::tr("attractor"));
+    w->feed().markChange(QObject::tr("attractor"));
   });
   QObject::connect(view, &SimulationView::ballClicked, &window.runs(), &RunController::setSelected);
   QObject::connect(view, &SimulationView::cursorMoved, w,
@@ -268,7 +268,7 @@ void resetSliders(MainWindow& window) {
   sidebar->showWorld(window.runs().group().world());
   sidebar->showStrength(Interactions::kDefaultStrength);
   sidebar->showTimeScale(FrameLoop::kDefaultTimeScale);
-  window.markChange(QObject::tr("sliders reset"));
+  window.feed().markChange(QObject::tr("sliders reset"));
 }
 
 void clearAttractors(MainWindow& window) {
