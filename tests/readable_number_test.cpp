@@ -23,12 +23,12 @@ TEST(ReadableNumber, FiguresHaveFourSignificantDigits) {
   EXPECT_EQ(figureText(-2.5), "-2.5");
 }
 
-TEST(ReadableNumber, VerySmallOrLargeFiguresInExponentForm) {
-  EXPECT_EQ(figureText(1.2345e-5), "1.234e-05");
-  EXPECT_EQ(figureText(-0.000999), "-9.990e-04");
+TEST(ReadableNumber, VerySmallOrLargeFiguresInExponentFormWithThreeDigits) {
+  EXPECT_EQ(figureText(1.2345e-5), "1.23e-05");
+  EXPECT_EQ(figureText(-0.000999), "-9.99e-04");
   EXPECT_EQ(figureText(0.001), "0.001");
-  EXPECT_EQ(figureText(2.5e6), "2.500e+06");
-  EXPECT_EQ(figureText(1e5), "1.000e+05");
+  EXPECT_EQ(figureText(2.5e6), "2.50e+06");
+  EXPECT_EQ(figureText(1e5), "1.00e+05");
 }
 
 TEST(ReadableNumber, NoFigureForNoValue) {

@@ -24,10 +24,11 @@ std::string readableText(double value, int significantDigits) {
 
 std::string figureText(double value) {
   constexpr int kSignificantDigits = 4;
+  constexpr int kExponentFormDigits = 3;
   if (!std::isfinite(value)) return "—";
   const double magnitude = std::abs(value);
   if (magnitude != 0.0 && (magnitude < 1e-3 || magnitude >= 1e5)) {
-    return printed("%.*e", kSignificantDigits - 1, value);
+    return printed("%.*e", kExponentFormDigits - 1, value);
   }
   return readableText(value, kSignificantDigits);
 }
