@@ -17,6 +17,7 @@
 #include "run/run_controller.h"
 #include "view/simulation_view.h"
 #include "window/main_window.h"
+#include "window/recording_target.h"
 
 namespace fooball::gui {
 
@@ -48,7 +49,7 @@ void showOnlyRecordedArea(MainWindow& window, RecordArea area, QSize size) {
   window.show();
   QApplication::processEvents();
   for (int attempt = 0; attempt < 4; ++attempt) {
-    const QSize shown = RecordingFrameSource::shownSize(window, area);
+    const QSize shown = RecordingFrameSource::shownSize(recordingTargetOf(window), area);
     if (shown == size) break;
     window.resize(window.size() + (size - shown));
     QApplication::processEvents();
@@ -69,7 +70,7 @@ int recordHeadless(MainWindow& window, const RecordingSettings& settings, int fr
   showOnlyRecordedArea(window, settings.area, settings.size);
   std::optional<RecordingSession> session;
   try {
-    session.emplace(window, settings);
+    session.emplace(recordingTargetOf(window), settings);
   } catch (const video::VideoError& error) {
     std::cerr << "fooball: error: " << error.what() << '\n';
     return 1;

@@ -21,6 +21,7 @@
 #include "window/ball_commands.h"
 #include "window/help_dialogs.h"
 #include "window/main_window.h"
+#include "window/recording_target.h"
 #include "window/scene_commands.h"
 #include "window/sidebar_wiring.h"
 
@@ -297,7 +298,11 @@ void showTool(QDialog* dialog) {
 }  // namespace
 
 RecordDialog* WindowActions::openRecord() {
-  if (!recordDialog_) recordDialog_ = new RecordDialog(window_);
+  if (!recordDialog_) {
+    recordDialog_ = new RecordDialog(recordingTargetOf(window_), window_);
+    connect(recordDialog_, &RecordDialog::errorToReport, &window_, &MainWindow::reportError);
+    connect(recordDialog_, &RecordDialog::statusToShow, &window_, &MainWindow::showStatus);
+  }
   showTool(recordDialog_);
   return recordDialog_;
 }
