@@ -6,8 +6,8 @@
 #include "capacity.h"
 #include "capacity_chart.h"
 #include "chosen_backends.h"
-#include "number_text.h"
 #include "progress_line.h"
+#include "readable_number.h"
 #include "registry.h"
 #include "run_setup.h"
 #include "status_line.h"
@@ -31,10 +31,11 @@ measure::CapacitySettings settingsFrom(const CapacityOptions& options) {
 
 void printTable(const std::vector<measure::CapacityResult>& results,
                 const measure::CapacitySettings& settings, std::ostream& out) {
-  out << "Capacity: the most balls whose median step fits " << readableText(settings.budgetMs, 4)
-      << " ms\n(standard gas at packing fraction " << readableText(settings.packingFraction)
-      << ", one step = " << readableText(settings.dt, 4) << " s, median of " << settings.timedSteps
-      << " steps after " << measure::stepTimingOf(settings).warmUpSteps
+  out << "Capacity: the most balls whose median step fits "
+      << text::readableText(settings.budgetMs, 4) << " ms\n(standard gas at packing fraction "
+      << text::readableText(settings.packingFraction)
+      << ", one step = " << text::readableText(settings.dt, 4) << " s, median of "
+      << settings.timedSteps << " steps after " << measure::stepTimingOf(settings).warmUpSteps
       << " untimed ones to thermalise; default options";
   for (const std::string& option : settings.options)
     out << ", " << option;
@@ -43,7 +44,7 @@ void printTable(const std::vector<measure::CapacityResult>& results,
   table.addRow({"backend", "balls", "median step", "counts measured", "note"});
   for (const measure::CapacityResult& result : results) {
     table.addRow({result.backend, std::to_string(result.outcome.balls),
-                  readableText(result.outcome.medianStepMs, 4) + " ms",
+                  text::readableText(result.outcome.medianStepMs, 4) + " ms",
                   std::to_string(result.outcome.probes.size()), measure::capacityNote(result)});
   }
   table.print(out, 2);
@@ -61,9 +62,9 @@ void capacityCommand(const CapacityOptions& options, std::ostream& out) {
 
   StatusLine status(!options.quiet && ProgressLine::stderrIsTerminal());
   const auto progress = [&](const measure::CapacityProgress& at) {
-    status.show(readableText(100.0 * at.fraction, 3) + "%  " + std::string(at.backend) + ": " +
-                std::to_string(at.search.latest.balls) + " balls, median step " +
-                readableText(at.search.latest.medianStepMs, 3) + " ms");
+    status.show(text::readableText(100.0 * at.fraction, 3) + "%  " + std::string(at.backend) +
+                ": " + std::to_string(at.search.latest.balls) + " balls, median step " +
+                text::readableText(at.search.latest.medianStepMs, 3) + " ms");
   };
   const std::vector<measure::CapacityResult> results =
       measure::measureCapacity(runs, settings, progress);

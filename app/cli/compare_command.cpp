@@ -12,8 +12,8 @@
 #include "compare_summary.h"
 #include "fooball/run_group.h"
 #include "fooball/run_spec.h"
-#include "number_text.h"
 #include "progress_line.h"
+#include "readable_number.h"
 #include "registry.h"
 #include "run_setup.h"
 #include "run_warnings.h"
@@ -210,7 +210,7 @@ void compareCommand(const CompareOptions& options, std::ostream& out) {
   if (options.chartPath) {
     plots::CompareChart chart;
     chart.title = "Compare on '" + scene.name + "' (" + std::to_string(summary.balls) +
-                  " balls, dt " + readableText(summary.dt, 4) + " s)";
+                  " balls, dt " + text::readableText(summary.dt, 4) + " s)";
     chart.duration = group.time();
     chart.departThreshold = departThreshold;
     chart.curves = std::move(recorder.curves());

@@ -11,8 +11,8 @@
 #include "failure_map.h"
 #include "failure_map_chart.h"
 #include "fooball/number_text.h"
-#include "number_text.h"
 #include "progress_line.h"
+#include "readable_number.h"
 #include "run_setup.h"
 #include "status_line.h"
 #include "text_table.h"
@@ -45,12 +45,13 @@ std::vector<const SweepSpec*> chosenSweeps(const std::vector<std::string>& names
 std::string boundaryText(const SweepSpec& spec, const Boundary& boundary) {
   const std::string direction = spec.harderAbove ? "up to " : "down to ";
   if (!boundary.firstFail)
-    return "passes everywhere tested (" + direction + readableText(*boundary.lastPass, 3) + ")";
+    return "passes everywhere tested (" + direction + text::readableText(*boundary.lastPass, 3) +
+           ")";
   std::string text =
       boundary.lastPass
-          ? "passes " + direction + readableText(*boundary.lastPass, 3) + ", fails from " +
-                readableText(*boundary.firstFail, 3)
-          : "fails everywhere tested (from " + readableText(*boundary.firstFail, 3) + ")";
+          ? "passes " + direction + text::readableText(*boundary.lastPass, 3) + ", fails from " +
+                text::readableText(*boundary.firstFail, 3)
+          : "fails everywhere tested (from " + text::readableText(*boundary.firstFail, 3) + ")";
   if (boundary.passesAgain) text += "; passes again at some harder points";
   return text;
 }
@@ -59,9 +60,9 @@ void printSweep(const SweepSpec& spec, const std::vector<SweepPoint>& points, Te
   table.addLine(std::string(spec.name) + ": " + std::string(spec.title) +
                 ". Parameter: " + std::string(spec.parameterName) + ".");
   std::string limits =
-      "  fails when " + std::string(spec.errorName) + " > " + readableText(spec.threshold, 3);
+      "  fails when " + std::string(spec.errorName) + " > " + text::readableText(spec.threshold, 3);
   if (std::isfinite(spec.overlapLimit))
-    limits += " or the deepest overlap > " + readableText(spec.overlapLimit, 3) + " r";
+    limits += " or the deepest overlap > " + text::readableText(spec.overlapLimit, 3) + " r";
   table.addLine(limits);
   for (const Boundary& boundary : failure_map::locateBoundaries(spec, points))
     table.addRow({boundary.backend, boundary.variant, boundaryText(spec, boundary)});

@@ -7,7 +7,7 @@
 #include "fooball/number_text.h"
 #include "fooball/presets.h"
 #include "fooball/scene_file.h"
-#include "number_text.h"
+#include "readable_number.h"
 #include "registry.h"
 #include "usage_error.h"
 
@@ -59,7 +59,7 @@ std::uint64_t stepCount(double duration, double dt) {
   }
   if (steps > static_cast<double>(kMaxRunSteps)) {
     throw UsageError("--duration " + exactNumberText(duration) + " s at dt " + exactNumberText(dt) +
-                     " s is " + readableText(steps) + " steps, more than the limit of " +
+                     " s is " + text::readableText(steps) + " steps, more than the limit of " +
                      std::to_string(kMaxRunSteps));
   }
   return static_cast<std::uint64_t>(steps);

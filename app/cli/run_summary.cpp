@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "number_text.h"
+#include "readable_number.h"
 #include "text_table.h"
 
 namespace fooball::cli {
@@ -14,15 +14,15 @@ namespace {
 /// `change` relative to `scale`, or absolute (in `unit`) when there is no scale to divide by,
 /// e.g. a scene at rest or with zero total energy.
 std::string changeText(double change, double scale, const std::string& unit) {
-  if (scale > 0.0) return readableText(change / scale) + " (relative)";
-  return readableText(change) + " " + unit + " (absolute)";
+  if (scale > 0.0) return text::readableText(change / scale) + " (relative)";
+  return text::readableText(change) + " " + unit + " (absolute)";
 }
 
 /// The relative energy error (fooball/metrics.h), or why there is none.
 std::string energyErrorText(const Metrics& metrics) {
   const double error = relativeEnergyError(metrics);
   if (std::isnan(error)) return "none (E(0) = 0: see the residual)";
-  return readableText(error) + " (residual / |E(0)|)";
+  return text::readableText(error) + " (residual / |E(0)|)";
 }
 
 std::string backendText(const RunSummary& summary) {
@@ -56,19 +56,19 @@ void printRunSummary(const RunSummary& summary, std::ostream& out) {
   table.addRow({"backend:", backendText(summary)});
   table.addRow({"balls:", std::to_string(summary.balls)});
   table.addRow({"steps:", std::to_string(summary.steps)});
-  table.addRow({"dt:", readableText(summary.dt) + " s"});
-  table.addRow({"simulated time:", readableText(summary.end.time) + " s"});
-  table.addRow({"wall-clock:", readableText(summary.wallSeconds, 4) + " s (physics " +
-                                   readableText(summary.physicsSeconds, 4) + " s)"});
+  table.addRow({"dt:", text::readableText(summary.dt) + " s"});
+  table.addRow({"simulated time:", text::readableText(summary.end.time) + " s"});
+  table.addRow({"wall-clock:", text::readableText(summary.wallSeconds, 4) + " s (physics " +
+                                   text::readableText(summary.physicsSeconds, 4) + " s)"});
   table.addRow({"steps/s:", std::to_string(std::llround(stepsPerSecond)) + " (physics)"});
   table.addRow({"energy change:", changeText(energyChange, std::abs(startEnergy), "J")});
   table.addRow({"momentum change:", changeText(momentumChange, momentumScale, "N s")});
-  table.addRow({"energy residual:", readableText(summary.end.energyResidual) + " J"});
+  table.addRow({"energy residual:", text::readableText(summary.end.energyResidual) + " J"});
   table.addRow({"energy error:", energyErrorText(summary.end)});
   table.addRow({"ball collisions:", std::to_string(summary.end.ballCollisions)});
   table.addRow({"wall collisions:", std::to_string(summary.end.wallCollisions)});
   for (const Diagnostic& diagnostic : summary.diagnostics) {
-    table.addRow({diagnostic.name + ":", readableText(diagnostic.value)});
+    table.addRow({diagnostic.name + ":", text::readableText(diagnostic.value)});
   }
   table.print(out);
 }

@@ -6,8 +6,8 @@
 #include "chosen_backends.h"
 #include "fooball/presets.h"
 #include "fooball/scene_file.h"
-#include "number_text.h"
 #include "progress_line.h"
+#include "readable_number.h"
 #include "run_setup.h"
 #include "status_line.h"
 #include "text_table.h"
@@ -21,10 +21,10 @@ namespace {
 void printTable(const std::vector<measure::TradeoffPoint>& points, const Scene& scene,
                 const measure::TradeoffSettings& settings, double chaosGrowth, std::ostream& out) {
   out << "Speed against accuracy on '" << scene.name << "' (" << scene.balls.size()
-      << " balls): " << readableText(settings.duration) << " s at dt "
-      << readableText(settings.dt, 4) << " s per setting; positions compared with the exact "
-      << "backend's at " << readableText(settings.compareAt) << " s, by when the scene "
-      << "amplifies a difference " << readableText(chaosGrowth, 2) << "-fold.\n"
+      << " balls): " << text::readableText(settings.duration) << " s at dt "
+      << text::readableText(settings.dt, 4) << " s per setting; positions compared with the exact "
+      << "backend's at " << text::readableText(settings.compareAt) << " s, by when the scene "
+      << "amplifies a difference " << text::readableText(chaosGrowth, 2) << "-fold.\n"
       << "Errors: energy and momentum relative, overlap as a fraction of the smaller radius, "
          "trajectory as RMS distance in m. *: on the backend's Pareto front of CPU cost against "
          "trajectory error.\n\n";
@@ -35,10 +35,11 @@ void printTable(const std::vector<measure::TradeoffPoint>& points, const Scene& 
                 "max overlap", "trajectory err (m)"});
   for (std::size_t i = 0; i < points.size(); ++i) {
     const measure::TradeoffPoint& point = points[i];
-    table.addRow({front[i] ? "*" : "", point.setting.backend, measure::settingsText(point.setting),
-                  readableText(point.cpuMsPerSimulatedSecond, 3),
-                  readableText(point.energyError, 2), readableText(point.momentumError, 2),
-                  readableText(point.maxOverlap, 2), readableText(point.trajectoryError, 2)});
+    table.addRow(
+        {front[i] ? "*" : "", point.setting.backend, measure::settingsText(point.setting),
+         text::readableText(point.cpuMsPerSimulatedSecond, 3),
+         text::readableText(point.energyError, 2), text::readableText(point.momentumError, 2),
+         text::readableText(point.maxOverlap, 2), text::readableText(point.trajectoryError, 2)});
   }
   table.print(out, 2);
 }
@@ -58,7 +59,7 @@ void tradeoffCommand(const TradeoffOptions& options, std::ostream& out) {
 
   StatusLine status(!options.quiet && ProgressLine::stderrIsTerminal());
   const auto progress = [&](const measure::TradeoffProgress& at) {
-    status.show(readableText(100.0 * at.fraction, 3) + "%  " + at.setting->backend + " " +
+    status.show(text::readableText(100.0 * at.fraction, 3) + "%  " + at.setting->backend + " " +
                 measure::settingsText(*at.setting));
   };
   const std::vector<measure::TradeoffPoint> points =

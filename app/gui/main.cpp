@@ -8,17 +8,17 @@
 #include <exception>
 #include <iostream>
 
-#include "command_line.h"
-#include "dark_theme.h"
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
 #include "fooball/version.h"
-#include "headless_run.h"
-#include "main_window.h"
 #include "registry.h"
-#include "view_text.h"
-#include "window_settings.h"
+#include "widgets/dark_theme.h"
+#include "widgets/view_text.h"
+#include "window/command_line.h"
+#include "window/headless_run.h"
+#include "window/main_window.h"
+#include "window/window_settings.h"
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include "fooball/backend.h"
 #include "gui_fixture.h"
 #include "registry.h"
-#include "run_list_editor.h"
-#include "settings_sidebar.h"
-#include "window_actions.h"
+#include "sidebar/run_list_editor.h"
+#include "sidebar/settings_sidebar.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "gui_fixture.h"
-#include "settings_sidebar.h"
+#include "sidebar/settings_sidebar.h"
 
 namespace fooball::gui::testing {
 namespace {

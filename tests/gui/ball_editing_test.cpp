@@ -6,11 +6,11 @@
 #include <QSpinBox>
 #include <QStatusBar>
 
-#include "ball_inspector.h"
 #include "fooball/backend.h"
 #include "gui_fixture.h"
-#include "settings_sidebar.h"
-#include "window_actions.h"
+#include "sidebar/ball_inspector.h"
+#include "sidebar/settings_sidebar.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -1,4 +1,4 @@
-#include "benchmark_dialog.h"
+#include "tools/benchmark_dialog.h"
 
 #include <QChart>
 #include <QChartView>
@@ -19,9 +19,9 @@
 #include <functional>
 
 #include "gui_fixture.h"
-#include "run_list_editor.h"
-#include "tool_run_panel.h"
-#include "window_actions.h"
+#include "sidebar/run_list_editor.h"
+#include "tools/tool_run_panel.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -5,7 +5,7 @@
 #include <QTemporaryDir>
 
 #include "gui_fixture.h"
-#include "window_actions.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -6,8 +6,8 @@
 #include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
-#include "run_list_editor.h"
-#include "settings_sidebar.h"
+#include "sidebar/run_list_editor.h"
+#include "sidebar/settings_sidebar.h"
 
 namespace fooball::gui::testing {
 namespace {

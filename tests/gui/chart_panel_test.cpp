@@ -21,6 +21,7 @@
 #include "axis_scale.h"
 #include "chart_csv.h"
 #include "chart_reading.h"
+#include "run_palette.h"
 #include "series_points.h"
 #include "time_chart.h"
 
@@ -333,10 +334,10 @@ TEST_F(ChartPanelTest, ResidualChartReadsTheTrueValuesFromTinyToHuge) {
 TEST_F(FourRunsAndBaseline, EachRunIsDrawnInItsColour) {
   for (int run = 0; run < kRuns; ++run) {
     for (const int chart : kRunCharts)
-      EXPECT_EQ(panel.displayedPen(chart, run).color(), ChartPanel::runColour(run)) << chart;
+      EXPECT_EQ(panel.displayedPen(chart, run).color(), colours::runColour(run)) << chart;
     if (run > 0) {
       EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, run).color(),
-                ChartPanel::runColour(run));
+                colours::runColour(run));
       EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, run).style(), Qt::SolidLine);
     }
   }
@@ -353,9 +354,9 @@ TEST_F(FourRunsAndBaseline, BaselineIsAGreyDashedDivergenceCurveOnly) {
       panel.displayedPoints(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), kSamples, kDt,
       [](double time) { return baselineDivergenceAt(time).rmsPositionDifference; }, "baseline");
   const QPen pen = panel.displayedPen(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun);
-  EXPECT_EQ(pen.color(), ChartPanel::baselineColour());
+  EXPECT_EQ(pen.color(), colours::neutralColour());
   EXPECT_EQ(pen.style(), Qt::CustomDashLine);
-  EXPECT_EQ(ChartPanel::baselineColour().saturation(), 0);  // grey
+  EXPECT_EQ(colours::neutralColour().saturation(), 0);  // grey
   for (const int chart : kRunCharts)
     EXPECT_EQ(panel.displayedPointCount(chart, ChartPanel::kBaselineRun), 0) << chart;
   EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), static_cast<std::size_t>(kSamples));
@@ -473,7 +474,7 @@ TEST_F(ChartPanelTest, AddingARunKeepsTheOthersHistory) {
   const QList<QPointF> total = panel.displayedPoints(ChartPanel::kEnergyChart, 0, 2);
   ASSERT_FALSE(total.isEmpty());
   EXPECT_EQ(total.front(), QPointF(0.0, metricsAt(0.0).sums.totalEnergy()));
-  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 2, 2).color(), ChartPanel::runColour(2));
+  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 2, 2).color(), colours::runColour(2));
 }
 
 TEST_F(ChartPanelTest, RemovingARunShiftsTheLaterOnesDown) {
@@ -494,7 +495,7 @@ TEST_F(ChartPanelTest, RemovingARunShiftsTheLaterOnesDown) {
   expectPlotted(
       panel.displayedPoints(ChartPanel::kDivergenceChart, 2), 40, 0.01,
       [](double time) { return divergenceAt(time, 3).rmsPositionDifference; }, "xpbd divergence");
-  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 1, 2).color(), ChartPanel::runColour(1));
+  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 1, 2).color(), colours::runColour(1));
   const QString legend = panel.runLegendText();
   EXPECT_FALSE(legend.contains("exact")) << legend.toStdString();
   EXPECT_LT(legend.indexOf("box2d"), legend.indexOf("xpbd"));
@@ -547,37 +548,11 @@ TEST_F(ChartPanelTest, EightRunsAreTheMost) {
     EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, run),
               run == 0 ? 0 : 100 + run);
     EXPECT_EQ(panel.displayedPen(ChartPanel::kMomentumChart, run, 2).color(),
-              ChartPanel::runColour(run));
+              colours::runColour(run));
     EXPECT_TRUE(panel.runLegendText().contains(labels[run] + (run == 0 ? " (" : "")));
   }
   EXPECT_EQ(panel.storedSampleCount(8), 0u);
   EXPECT_FALSE(panel.runLegendText().contains(labels[8]));
-}
-
-TEST(ChartColours, EightRunColoursAreDistinctAndReadableOnBlack) {
-  const auto distance = [](const QColor& a, const QColor& b) {
-    return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
-  };
-  // WCAG's contrast ratio against the near-black plot (and the black simulation view).
-  const auto luminance = [](const QColor& colour) {
-    const auto linear = [](double channel) {
-      return channel <= 0.04045 ? channel / 12.92 : std::pow((channel + 0.055) / 1.055, 2.4);
-    };
-    return 0.2126 * linear(colour.redF()) + 0.7152 * linear(colour.greenF()) +
-           0.0722 * linear(colour.blueF());
-  };
-  const double black = luminance(QColor(0x05, 0x05, 0x07));
-  for (int run = 0; run < ChartPanel::kMaxRuns; ++run) {
-    const QColor colour = ChartPanel::runColour(run);
-    EXPECT_GE((luminance(colour) + 0.05) / (black + 0.05), 4.5) << colour.name().toStdString();
-    EXPECT_GE(distance(colour, ChartPanel::baselineColour()), 80.0) << colour.name().toStdString();
-    EXPECT_GE(colour.saturation(), 100) << colour.name().toStdString();  // not a grey
-    for (int other = 0; other < run; ++other) {
-      EXPECT_GE(distance(colour, ChartPanel::runColour(other)), 80.0)
-          << colour.name().toStdString() << " vs "
-          << ChartPanel::runColour(other).name().toStdString();
-    }
-  }
 }
 
 TEST_F(ChartPanelTest, ViewWaitsForARefresh) {
@@ -882,7 +857,7 @@ TEST_F(FourRunsAndBaseline, PngDrawsEveryRunsCurvesInItsColourWhereItsDataIs) {
     const QRect after(origin + QPoint(size.width() * 21 / 40, 0),
                       QSize(size.width() * 19 / 40, size.height()));
     for (int run = 0; run < kRuns; ++run) {
-      const QColor colour = ChartPanel::runColour(run);
+      const QColor colour = colours::runColour(run);
       const bool drawn = run > 0 || !divergence;
       EXPECT_GE(columnsWithColour(image, data, colour, 24), drawn ? 0.75 : 0.0)
           << title << ", run " << run;
@@ -890,13 +865,13 @@ TEST_F(FourRunsAndBaseline, PngDrawsEveryRunsCurvesInItsColourWhereItsDataIs) {
           << title << ", run " << run;
       EXPECT_LE(columnsWithColour(image, after, colour, 24), 0.01) << title << ", run " << run;
     }
-    const double baseline = columnsWithColour(image, data, ChartPanel::baselineColour(), 6);
+    const double baseline = columnsWithColour(image, data, colours::neutralColour(), 6);
     if (divergence) {
       EXPECT_GE(baseline, 0.5) << title;
     } else {
       EXPECT_LE(baseline, 0.01) << title;
     }
-    EXPECT_LE(columnsWithColour(image, after, ChartPanel::baselineColour(), 6), 0.01) << title;
+    EXPECT_LE(columnsWithColour(image, after, colours::neutralColour(), 6), 0.01) << title;
   }
 }
 

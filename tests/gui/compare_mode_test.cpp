@@ -16,16 +16,17 @@
 #include <thread>
 #include <vector>
 
-#include "backend_options_form.h"
 #include "chart_reading.h"
 #include "charts/chart_panel.h"
-#include "compare_readout.h"
 #include "fooball/number_text.h"
+#include "frames/run_feed.h"
 #include "gui_fixture.h"
-#include "run_counters.h"
-#include "run_list_editor.h"
-#include "settings_sidebar.h"
-#include "window_actions.h"
+#include "readouts/compare_readout.h"
+#include "readouts/run_counters.h"
+#include "sidebar/backend_options_form.h"
+#include "sidebar/run_list_editor.h"
+#include "sidebar/settings_sidebar.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -148,7 +149,7 @@ TEST_F(CompareMode, TheReadoutShowsTheRunGroupsOwnDivergenceNumbers) {
   open(fooball::testing::gas(80), "elastic", {"box2d", "exact"});
   ASSERT_TRUE(group().hasBaseline());
   frames(120);
-  window->showReadouts();
+  window->feed().showReadouts();
   const Divergence divergence = group().divergence(1);
   EXPECT_GT(divergence.maxPositionDifference, 0.0);
   EXPECT_LE(divergence.rmsPositionDifference, divergence.maxPositionDifference);
@@ -283,7 +284,7 @@ TEST_F(CompareMode, TheChartsPlotEveryRunsMetricsAndTheirTicksReadThem) {
 TEST_F(CompareMode, TheCountersShowEachRunsOwnCollisionsBouncesOverlapAndEscapes) {
   open(fooball::testing::gas(80), "elastic", {"exact", "box2d"});
   frames(90);
-  window->showReadouts();
+  window->feed().showReadouts();
   const QStringList lines = window->sidebar()->counters()->text().split(QLatin1Char('\n'));
   ASSERT_EQ(lines.size(), 3) << window->sidebar()->counters()->text().toStdString();
   const QRegularExpression row(QStringLiteral(
@@ -317,7 +318,7 @@ TEST_F(CompareMode, TheCountersShowAnOverlapDeeperThanTheRadiusInWholePercents) 
                  fooball::testing::ball({8.2, 4.5}, {-10.0, 0.0}, 0.1)};
   open(scene, "box2d:substeps=1");
   frames(1);
-  window->showReadouts();
+  window->feed().showReadouts();
   const double overlap = runs().run(0).metrics().maxOverlap;
   // Box2D works in single precision: its positions round at ~1e-6 m.
   ASSERT_NEAR(overlap, (0.2 - (0.4 - 20.0 / 60.0)) / 0.1, 1e-4) << "the balls passed inwards";

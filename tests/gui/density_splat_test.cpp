@@ -1,7 +1,7 @@
 // Balls narrower than a pixel are drawn as density (DensitySplat): each shows its disc's area
 // and colour where its centre is, as antialiased discs would, and the view picks this by itself.
 
-#include "density_splat.h"
+#include "view/density_splat.h"
 
 #include <QImage>
 #include <cmath>

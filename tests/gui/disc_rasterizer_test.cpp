@@ -1,4 +1,4 @@
-#include "disc_rasterizer.h"
+#include "view/disc_rasterizer.h"
 
 #include <gtest/gtest.h>
 

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "fooball/scene.h"
-#include "main_window.h"
-#include "run_controller.h"
-#include "simulation_view.h"
+#include "run/run_controller.h"
 #include "test_scenes.h"
-#include "view_transform.h"
+#include "view/simulation_view.h"
+#include "view/view_transform.h"
+#include "window/main_window.h"
 
 namespace fooball::gui::testing {
 

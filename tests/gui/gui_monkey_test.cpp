@@ -25,12 +25,12 @@
 #include "backend_profiles.h"
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
-#include "log_slider.h"
 #include "robustness/case_run.h"
-#include "run_list_editor.h"
-#include "scene_commands.h"
-#include "settings_sidebar.h"
-#include "window_actions.h"
+#include "sidebar/run_list_editor.h"
+#include "sidebar/settings_sidebar.h"
+#include "widgets/log_slider.h"
+#include "window/scene_commands.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

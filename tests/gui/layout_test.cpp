@@ -9,8 +9,8 @@
 #include <QSpinBox>
 
 #include "gui_fixture.h"
-#include "settings_sidebar.h"
-#include "window_actions.h"
+#include "sidebar/settings_sidebar.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

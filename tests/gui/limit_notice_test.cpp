@@ -8,8 +8,8 @@
 
 #include "fooball/presets.h"
 #include "gui_fixture.h"
-#include "log_slider.h"
-#include "settings_sidebar.h"
+#include "sidebar/settings_sidebar.h"
+#include "widgets/log_slider.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -1,4 +1,4 @@
-#include "log_slider.h"
+#include "widgets/log_slider.h"
 
 #include <gtest/gtest.h>
 

@@ -11,12 +11,12 @@
 
 #include "charts/chart_panel.h"
 #include "fooball/version.h"
-#include "frame_loop.h"
+#include "frames/frame_loop.h"
 #include "gui_fixture.h"
 #include "registry.h"
-#include "simulation_view.h"
-#include "view_text.h"
-#include "window_settings.h"
+#include "view/simulation_view.h"
+#include "widgets/view_text.h"
+#include "window/window_settings.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -2,7 +2,7 @@
 #include <QStatusBar>
 
 #include "gui_fixture.h"
-#include "settings_sidebar.h"
+#include "sidebar/settings_sidebar.h"
 
 namespace fooball::gui::testing {
 namespace {

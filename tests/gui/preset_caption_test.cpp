@@ -10,10 +10,10 @@
 #include "charts/chart_panel.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
-#include "run_counters.h"
-#include "settings_sidebar.h"
-#include "view_text.h"
-#include "window_actions.h"
+#include "readouts/run_counters.h"
+#include "sidebar/settings_sidebar.h"
+#include "widgets/view_text.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -6,8 +6,8 @@
 
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
-#include "timeline_bar.h"
-#include "window_actions.h"
+#include "readouts/timeline_bar.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

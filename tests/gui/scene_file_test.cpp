@@ -7,7 +7,7 @@
 
 #include "fooball/presets.h"
 #include "gui_fixture.h"
-#include "scene_commands.h"
+#include "window/scene_commands.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -3,9 +3,9 @@
 
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
-#include "log_slider.h"
-#include "number_format.h"
-#include "settings_sidebar.h"
+#include "sidebar/settings_sidebar.h"
+#include "widgets/log_slider.h"
+#include "widgets/number_format.h"
 
 namespace fooball::gui::testing {
 namespace {

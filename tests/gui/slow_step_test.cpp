@@ -13,9 +13,9 @@
 #include "fooball/random_balls.h"
 #include "gui_fixture.h"
 #include "registry.h"
-#include "run_list_editor.h"
-#include "settings_sidebar.h"
-#include "step_worker.h"
+#include "run/step_worker.h"
+#include "sidebar/run_list_editor.h"
+#include "sidebar/settings_sidebar.h"
 
 namespace fooball::gui::testing {
 namespace {

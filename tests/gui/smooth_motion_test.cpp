@@ -9,10 +9,10 @@
 #include <QSlider>
 #include <vector>
 
-#include "frame_loop.h"
+#include "frames/frame_loop.h"
 #include "gui_fixture.h"
-#include "log_slider.h"
-#include "settings_sidebar.h"
+#include "sidebar/settings_sidebar.h"
+#include "widgets/log_slider.h"
 
 namespace fooball::gui::testing {
 namespace {

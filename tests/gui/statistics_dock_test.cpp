@@ -11,10 +11,12 @@
 #include "charts/speed_histogram_chart.h"
 #include "fooball/presets.h"
 #include "fooball/speed_distribution.h"
-#include "gas_readout.h"
+#include "frames/run_feed.h"
 #include "gui_fixture.h"
-#include "statistics_panel.h"
-#include "window_actions.h"
+#include "readouts/gas_readout.h"
+#include "readouts/statistics_panel.h"
+#include "run_palette.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -108,7 +110,7 @@ TEST_F(StatisticsDock, HistogramsCountEveryBallOfEveryRunAsTheEngineDoesInTheRun
   open(loadPreset("gas"), "elastic", {"exact", "box2d"});
   openDock();
   frames(90);
-  window->showStatistics();  // now, so that the runs are where they were measured
+  window->feed().showStatistics();  // now, so that the runs are where they were measured
   ASSERT_EQ(histogram().histogramCount(), 3);
   for (int run = 0; run < 3; ++run) {
     const std::vector<std::size_t> counts = drawnCounts(run);
@@ -119,7 +121,7 @@ TEST_F(StatisticsDock, HistogramsCountEveryBallOfEveryRunAsTheEngineDoesInTheRun
         << "run " << run << ": every ball in a bin";
     EXPECT_EQ(counts, speedHistogram(runs().run(run).velocities(), counts.size(), range).counts)
         << "run " << run;
-    EXPECT_EQ(histogram().histogramPen(run).color(), runColour(run));
+    EXPECT_EQ(histogram().histogramPen(run).color(), colours::runColour(run));
     EXPECT_EQ(histogram().histogramName(run), runs().label(run));
     EXPECT_EQ(histogram().speedRange().second, range) << "the bins span the speed axis";
   }
@@ -137,7 +139,7 @@ TEST_F(StatisticsDock, TemperatureReadsTheEnginesToTheDigitsShown) {
   open(loadPreset("gas"), "elastic", {"exact"});
   openDock();
   frames(30);
-  window->showStatistics();
+  window->feed().showStatistics();
   for (int run = 0; run < 2; ++run) {
     const Simulation& simulation = runs().run(run);
     const double kT = kineticTemperature(simulation.masses(), simulation.velocities());
@@ -154,7 +156,7 @@ TEST_F(StatisticsDock, SaysWhenTheTheoryDoesNotApply) {
   open(loadPreset("gas"));
   openDock();
   frames(60);
-  window->showStatistics();
+  window->feed().showStatistics();
   GasReadout& readout = *statistics().readout();
   EXPECT_TRUE(readout.caveat().isEmpty());
   EXPECT_NE(readout.text(GasReadout::kPressureRatio, 0), QStringLiteral("n/a"));
@@ -164,7 +166,7 @@ TEST_F(StatisticsDock, SaysWhenTheTheoryDoesNotApply) {
     world.gravity = {0.0, -9.81};
     group.setWorld(world);
   });
-  window->showStatistics();
+  window->feed().showStatistics();
   EXPECT_TRUE(readout.caveat().contains(QStringLiteral("gravity")))
       << readout.caveat().toStdString();
   for (const GasReadout::Row row : {GasReadout::kHendersonPressure, GasReadout::kPressureRatio,

@@ -14,10 +14,10 @@
 #include <QTimer>
 #include <QToolTip>
 
-#include "benchmark_dialog.h"
-#include "dark_theme.h"
 #include "gui_fixture.h"
-#include "help_dialogs.h"
+#include "tools/benchmark_dialog.h"
+#include "widgets/dark_theme.h"
+#include "window/help_dialogs.h"
 
 namespace fooball::gui::testing {
 namespace {

@@ -20,13 +20,13 @@
 #include <memory>
 
 #include "chart_image.h"
-#include "failure_map_dialog.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
-#include "measured_charts.h"
-#include "tool_run_panel.h"
-#include "tradeoff_dialog.h"
-#include "window_actions.h"
+#include "tools/failure_map_dialog.h"
+#include "tools/measured_charts.h"
+#include "tools/tool_run_panel.h"
+#include "tools/tradeoff_dialog.h"
+#include "window/window_actions.h"
 
 namespace fooball::gui::testing {
 namespace {

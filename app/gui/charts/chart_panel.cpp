@@ -23,6 +23,7 @@
 
 #include "chart_csv.h"
 #include "chart_style.h"
+#include "run_palette.h"
 #include "time_chart.h"
 #include "toggle_icon.h"
 
@@ -283,9 +284,9 @@ void ChartPanel::rebuildCurves() {
     for (int run = 0; run < runCount; ++run) {
       const QString label =
           data_.runName(run).isEmpty() ? tr("run %1").arg(run) : data_.runName(run).toHtmlEscaped();
-      entries.append(
-          QStringLiteral("<span style='color:%1'>&#x2501;&#x2501;</span>&nbsp;%2%3")
-              .arg(runColour(run).name(), label, run == 0 ? tr("&nbsp;(reference)") : QString()));
+      entries.append(QStringLiteral("<span style='color:%1'>&#x2501;&#x2501;</span>&nbsp;%2%3")
+                         .arg(colours::runColour(run).name(), label,
+                              run == 0 ? tr("&nbsp;(reference)") : QString()));
     }
   }
   runLegend_->setText(entries.join(QStringLiteral(" &nbsp;&nbsp; ")));
@@ -576,14 +577,6 @@ int ChartPanel::displayedMarkerCount() const {
     if (isChartShown(chart)) return chart->visibleMarkerCount();
   }
   return 0;
-}
-
-QColor ChartPanel::runColour(int runIndex) {
-  return gui::runColour(runIndex);
-}
-
-QColor ChartPanel::baselineColour() {
-  return gui::baselineColour();
 }
 
 }  // namespace fooball::gui

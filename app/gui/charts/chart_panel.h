@@ -130,12 +130,6 @@ class ChartPanel : public QWidget {
   /// Redraws now (the timer calls it; tests call it directly).
   void refresh();
 
-  /// The colour of run `runIndex`'s curves in compare mode (8 distinct ones), for anything that
-  /// should match: the simulation view's rings, the compare readout.
-  static QColor runColour(int runIndex);
-  /// The chaos baseline's colour: grey.
-  static QColor baselineColour();
-
  private:
   QToolBar* createToolBar();
   /// Every chart's curves and the run legend follow the runs and the baseline.

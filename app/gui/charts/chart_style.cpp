@@ -6,9 +6,8 @@
 #include <QLegend>
 #include <QList>
 #include <QValueAxis>
-#include <array>
 
-#include "fooball/run_group.h"
+#include "run_palette.h"
 
 namespace fooball::gui {
 namespace {
@@ -47,39 +46,17 @@ QuantityLook lookOf(Quantity quantity) {
 
 }  // namespace
 
-QColor runColour(int runIndex) {
-  // Runs 0 and 1 keep the colours two-run compare mode always had. The rest go round the hue
-  // circle between them, alternating warm and cool so that neighbouring runs differ most.
-  static const std::array<QColor, 8> kColours{
-      QColor(0xff, 0xa7, 0x26),  // orange
-      QColor(0x26, 0xc6, 0xda),  // cyan
-      QColor(0xe0, 0x40, 0xfb),  // magenta
-      QColor(0x9c, 0xe0, 0x4c),  // lime
-      QColor(0xff, 0x52, 0x52),  // red
-      QColor(0x5c, 0x8d, 0xff),  // blue
-      QColor(0xff, 0xee, 0x58),  // yellow
-      QColor(0x69, 0xf0, 0xae),  // green
-  };
-  static_assert(kColours.size() == RunGroup::kMaxRuns);
-  const auto count = static_cast<int>(kColours.size());
-  return kColours[static_cast<std::size_t>(((runIndex % count) + count) % count)];
-}
-
-QColor baselineColour() {
-  return QColor(0x9e, 0x9e, 0x9e);
-}
-
 QPen baselinePen() {
   // As heavy as a run's headline curve, so it can be followed at a glance; the dashes say it is
   // a reference, not a method.
-  QPen pen(baselineColour(), 2.0);
+  QPen pen(colours::neutralColour(), 2.0);
   pen.setDashPattern({4.0, 3.0});
   return pen;
 }
 
 QPen curvePen(Quantity quantity, int runIndex, bool colourByRun) {
   const QuantityLook look = lookOf(quantity);
-  const QColor colour = colourByRun ? runColour(runIndex) : look.singleRunColour;
+  const QColor colour = colourByRun ? colours::runColour(runIndex) : look.singleRunColour;
   // The headline curve is heavier, so the eye finds it first.
   if (look.rank == 0) return QPen(colour, 2.0);
   // The parts are one pixel wide: Qt draws such lines directly, where a wider pen is stroked

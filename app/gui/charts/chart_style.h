@@ -14,17 +14,10 @@ class QValueAxis;
 
 namespace fooball::gui {
 
-/// A run's colour in compare mode, for runs 0 to 7 (RunGroup::kMaxRuns); others repeat them.
-/// Eight hues far apart, all light enough to read on the near-black plot and on the black
-/// simulation view, none of them grey (the baseline's) or white (markers, the single-run total).
-QColor runColour(int runIndex);
-/// The chaos baseline's colour: a neutral grey that no run has.
-QColor baselineColour();
-
 /// The pen of `quantity`'s curve for run `runIndex`. With one run (`colourByRun` false) each
-/// quantity has its own colour; in compare mode the colour says the run and the line style says
-/// the quantity (solid for the headline quantity of a chart, dashed and dotted for its parts).
-/// Headlines are heavier than parts.
+/// quantity has its own colour; in compare mode the colour says the run (colours::runColour) and
+/// the line style says the quantity (solid for the headline quantity of a chart, dashed and dotted
+/// for its parts). Headlines are heavier than parts.
 QPen curvePen(Quantity quantity, int runIndex, bool colourByRun);
 /// The chaos baseline's curve: grey and dashed, so it reads as a reference line, not a run.
 QPen baselinePen();

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "chart_style.h"
+#include "run_palette.h"
 
 namespace fooball::gui {
 namespace {
@@ -67,9 +68,9 @@ void SpeedHistogramChart::setRuns(const QStringList& labels, const QString& curv
     histogram->attachAxis(countAxis_);
     // After addSeries, which applies the theme's colours. One-pixel outlines: Qt draws those
     // directly.
-    QColor fill = runColour(run);
+    QColor fill = colours::runColour(run);
     fill.setAlpha(alpha);
-    histogram->setPen(QPen(runColour(run), 1.0));
+    histogram->setPen(QPen(colours::runColour(run), 1.0));
     histogram->setBrush(fill);
     histograms_.push_back(histogram);
   }
@@ -85,7 +86,7 @@ void SpeedHistogramChart::setRuns(const QStringList& labels, const QString& curv
   for (std::size_t run = 0; run < histograms_.size(); ++run) {
     for (QLegendMarker* marker : chart_->legend()->markers(histograms_[run])) {
       marker->setShape(QLegend::MarkerShapeRectangle);
-      marker->setBrush(runColour(static_cast<int>(run)));
+      marker->setBrush(colours::runColour(static_cast<int>(run)));
     }
   }
 }

@@ -13,8 +13,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "frame_loop.h"
-#include "main_window.h"
+#include "frames/frame_loop.h"
 #include "video_format.h"
 
 namespace fooball::gui {
@@ -35,7 +34,8 @@ QString sizeText(QSize size) {
 
 }  // namespace
 
-RecordDialog::RecordDialog(MainWindow& window) : QDialog(&window), window_(window) {
+RecordDialog::RecordDialog(const RecordingTarget& target, QWidget& parent)
+    : QDialog(&parent), target_(target) {
   setObjectName(QStringLiteral("recordDialog"));
   setWindowTitle(tr("Record"));
 
@@ -130,13 +130,13 @@ void RecordDialog::offerFrameRates() {
 
 void RecordDialog::updateNote() {
   const QSize shown =
-      evenSize(RecordingFrameSource::shownSize(window_, RecordArea(area_->currentData().toInt())));
+      evenSize(RecordingFrameSource::shownSize(target_, RecordArea(area_->currentData().toInt())));
   size_->setItemText(0, tr("As shown (%1)").arg(sizeText(shown)));
   note_->setText(
       tr("A recorded second is a simulated second times the speed slider (now %1×). Every frame "
          "holds the same simulated time, so a busy machine records slower than real time, never "
          "a jerky video. Pausing pauses the recording.")
-          .arg(QLocale().toString(window_.frames().timeScale(), 'g', 3)));
+          .arg(QLocale().toString(target_.frames.timeScale(), 'g', 3)));
 }
 
 RecordingSettings RecordDialog::settings() const {
@@ -145,7 +145,7 @@ RecordingSettings RecordDialog::settings() const {
   settings.area = RecordArea(area_->currentData().toInt());
   const QSize chosen = size_->currentData().toSize();
   settings.size =
-      chosen.isValid() ? chosen : evenSize(RecordingFrameSource::shownSize(window_, settings.area));
+      chosen.isValid() ? chosen : evenSize(RecordingFrameSource::shownSize(target_, settings.area));
   settings.framesPerSecond = rate_->currentData().toInt();
   return settings;
 }
@@ -155,15 +155,15 @@ bool RecordDialog::start() {
   updateNote();
   const RecordingSettings chosen = settings();
   try {
-    session_ = std::make_unique<RecordingSession>(window_, chosen);
+    session_ = std::make_unique<RecordingSession>(target_, chosen);
   } catch (const video::VideoError& error) {
-    window_.reportError(tr("Could not record"), QString::fromStdString(error.what()));
+    emit errorToReport(tr("Could not record"), QString::fromStdString(error.what()));
     return false;
   }
   connect(session_.get(), &RecordingSession::frameRecorded, this, &RecordDialog::showProgress);
   connect(session_.get(), &RecordingSession::failed, this, [this](const QString& message) {
     showStopped(tr("Stopped: %1").arg(message));
-    window_.reportError(tr("The recording stopped"), message);
+    emit errorToReport(tr("The recording stopped"), message);
   });
   for (QWidget* field : {static_cast<QWidget*>(path_), static_cast<QWidget*>(area_),
                          static_cast<QWidget*>(size_), static_cast<QWidget*>(rate_)})
@@ -171,7 +171,7 @@ bool RecordDialog::start() {
   startStop_->setText(tr("Stop"));
   session_->startLive();
   showProgress();
-  window_.showStatus(tr("Recording to %1").arg(chosen.path));
+  emit statusToShow(tr("Recording to %1").arg(chosen.path));
   return true;
 }
 
@@ -190,7 +190,7 @@ void RecordDialog::stop() {
   const QString error = session_->stop();
   if (!error.isEmpty()) {
     showStopped(tr("Stopped: %1").arg(error));
-    window_.reportError(tr("The recording could not be finished"), error);
+    emit errorToReport(tr("The recording could not be finished"), error);
     return;
   }
   const QString message = tr("Saved %1: %2 s of video (%3 frames), %4")
@@ -198,7 +198,7 @@ void RecordDialog::stop() {
                               .arg(session_->seconds(), 0, 'f', 1)
                               .arg(session_->frames())
                               .arg(QLocale().formattedDataSize(session_->bytes()));
-  window_.showStatus(message);
+  emit statusToShow(message);
   showStopped(message);
 }
 

@@ -13,8 +13,6 @@ class QPushButton;
 
 namespace fooball::gui {
 
-class MainWindow;
-
 /// File → Record…: where to, what (the box, or the box and the charts), the video's size and
 /// frame rate, and Start/Stop with the video's length and the file's size while it records. Not
 /// modal: the window stays live, and closing the dialog keeps recording (File → Record… shows
@@ -23,11 +21,12 @@ class RecordDialog : public QDialog {
   Q_OBJECT
 
  public:
-  explicit RecordDialog(MainWindow& window);
+  /// Records `target`; a dialog of `parent`.
+  RecordDialog(const RecordingTarget& target, QWidget& parent);
   ~RecordDialog() override;
 
-  /// Starts with the settings shown; on a bad setting or a file that cannot be written, shows
-  /// one error (MainWindow::reportError) and starts nothing. Returns whether it started.
+  /// Starts with the settings shown; on a bad setting or a file that cannot be written, reports
+  /// one error (errorToReport) and starts nothing. Returns whether it started.
   bool start();
   /// Stops and finishes the file; says how it went.
   void stop();
@@ -43,6 +42,12 @@ class RecordDialog : public QDialog {
   QPushButton* startButton() const { return startStop_; }
   QLabel* progressLabel() const { return progress_; }
 
+ signals:
+  /// An error for the user (the window's error reporter).
+  void errorToReport(const QString& title, const QString& message);
+  /// A line for the status bar: the recording started, or where it was saved.
+  void statusToShow(const QString& message);
+
  protected:
   void showEvent(QShowEvent* event) override;
 
@@ -55,7 +60,7 @@ class RecordDialog : public QDialog {
   void showStopped(const QString& message);
   void updateNote();
 
-  MainWindow& window_;
+  RecordingTarget target_;
   QLineEdit* path_;
   QComboBox* area_;
   QComboBox* size_;

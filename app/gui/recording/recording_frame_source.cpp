@@ -5,37 +5,37 @@
 #include <algorithm>
 
 #include "charts/chart_panel.h"
-#include "main_window.h"
-#include "simulation_view.h"
+#include "view/simulation_view.h"
 
 namespace fooball::gui {
 
 namespace {
 
-bool chartsShown(const MainWindow& window, RecordArea area) {
-  return area == RecordArea::BoxAndCharts && window.chartsDock()->isVisible() &&
-         window.charts()->isVisible();
+bool chartsShown(const RecordingTarget& target, RecordArea area) {
+  return area == RecordArea::BoxAndCharts && target.chartsDock.isVisible() &&
+         target.charts.isVisible();
 }
 
 }  // namespace
 
-RecordingFrameSource::RecordingFrameSource(MainWindow& window, RecordArea area, QSize videoSize)
-    : window_(window),
+RecordingFrameSource::RecordingFrameSource(const RecordingTarget& target, RecordArea area,
+                                           QSize videoSize)
+    : target_(target),
       area_(area),
       canvas_(videoSize, QImage::Format_RGB32),
       image_(videoSize, QImage::Format_RGB888) {}
 
-QSize RecordingFrameSource::shownSize(const MainWindow& window, RecordArea area) {
-  QSize size = window.view()->size();
-  if (chartsShown(window, area)) {
-    const QSize charts = window.charts()->size();
+QSize RecordingFrameSource::shownSize(const RecordingTarget& target, RecordArea area) {
+  QSize size = target.view.size();
+  if (chartsShown(target, area)) {
+    const QSize charts = target.charts.size();
     size = {std::max(size.width(), charts.width()), size.height() + charts.height()};
   }
   return size;
 }
 
 const QImage& RecordingFrameSource::grab() {
-  const QSize shown = shownSize(window_, area_);
+  const QSize shown = shownSize(target_, area_);
   canvas_.fill(Qt::black);
   if (!shown.isEmpty()) {
     QPainter painter(&canvas_);
@@ -46,15 +46,14 @@ const QImage& RecordingFrameSource::grab() {
     painter.translate((canvas_.width() - scale * shown.width()) / 2.0,
                       (canvas_.height() - scale * shown.height()) / 2.0);
     painter.scale(scale, scale);
-    SimulationView* view = window_.view();
-    view->render(&painter);
-    if (chartsShown(window_, area_)) {
+    target_.view.render(&painter);
+    if (chartsShown(target_, area_)) {
       // Redrawn for every frame rather than by the panel's 10-per-second timer, so a recording
       // shows the charts as of its own frames, however fast the machine.
-      window_.charts()->refresh();
-      painter.translate(0, view->height());
-      window_.charts()->render(&painter, QPoint(), QRegion(),
-                               QWidget::DrawWindowBackground | QWidget::DrawChildren);
+      target_.charts.refresh();
+      painter.translate(0, target_.view.height());
+      target_.charts.render(&painter, QPoint(), QRegion(),
+                            QWidget::DrawWindowBackground | QWidget::DrawChildren);
     }
   }
   image_ = canvas_.convertToFormat(QImage::Format_RGB888);

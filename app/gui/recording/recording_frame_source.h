@@ -3,9 +3,24 @@
 #include <QImage>
 #include <QSize>
 
+class QWidget;
+
 namespace fooball::gui {
 
-class MainWindow;
+class ChartPanel;
+class FrameLoop;
+class RunController;
+class SimulationView;
+
+/// What a recording draws and drives: the window's view, its chart panel in the charts' dock, its
+/// frame loop and its runs (not the window itself).
+struct RecordingTarget {
+  SimulationView& view;
+  ChartPanel& charts;
+  QWidget& chartsDock;
+  FrameLoop& frames;
+  const RunController& runs;
+};
 
 /// What a recording shows.
 enum class RecordArea {
@@ -19,10 +34,10 @@ enum class RecordArea {
 /// differ; at the size shown it is the screen's picture pixel for pixel.
 class RecordingFrameSource {
  public:
-  RecordingFrameSource(MainWindow& window, RecordArea area, QSize videoSize);
+  RecordingFrameSource(const RecordingTarget& target, RecordArea area, QSize videoSize);
 
   /// px: the area as it stands in the window now (the charts only while their dock is shown).
-  static QSize shownSize(const MainWindow& window, RecordArea area);
+  static QSize shownSize(const RecordingTarget& target, RecordArea area);
 
   /// Draws the area now; the image (QImage::Format_RGB888, videoSize) stays valid until the next
   /// call.
@@ -30,7 +45,7 @@ class RecordingFrameSource {
   const QImage& image() const { return image_; }
 
  private:
-  MainWindow& window_;
+  RecordingTarget target_;
   RecordArea area_;
   QImage canvas_;  ///< Format_RGB32: what QPainter draws fastest
   QImage image_;

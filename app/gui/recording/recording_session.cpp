@@ -1,8 +1,7 @@
 #include "recording_session.h"
 
-#include "frame_loop.h"
-#include "main_window.h"
-#include "run_controller.h"
+#include "frames/frame_loop.h"
+#include "run/run_controller.h"
 
 namespace fooball::gui {
 
@@ -17,10 +16,10 @@ video::VideoSettings videoSettings(const RecordingSettings& settings) {
 
 }  // namespace
 
-RecordingSession::RecordingSession(MainWindow& window, const RecordingSettings& settings)
-    : window_(window),
+RecordingSession::RecordingSession(const RecordingTarget& target, const RecordingSettings& settings)
+    : target_(target),
       settings_(settings),
-      source_(window, settings.area, settings.size),
+      source_(target, settings.area, settings.size),
       encoder_(std::make_unique<video::VideoEncoder>(settings.path.toStdString(),
                                                      videoSettings(settings))) {
   clock_.start();
@@ -32,15 +31,15 @@ RecordingSession::~RecordingSession() {
 
 void RecordingSession::startLive() {
   live_ = true;
-  window_.frames().setFixedFrameRate(settings_.framesPerSecond, [this] {
+  target_.frames.setFixedFrameRate(settings_.framesPerSecond, [this] {
     // Paused, no simulated time passes: nothing to record.
-    if (!window_.runs().paused()) takeFrame();
+    if (!target_.runs.paused()) takeFrame();
   });
 }
 
 bool RecordingSession::recordNextFrame() {
   if (stopped_) return false;
-  window_.frames().advanceExactly(1.0 / settings_.framesPerSecond);
+  target_.frames.advanceExactly(1.0 / settings_.framesPerSecond);
   return takeFrame();
 }
 
@@ -62,7 +61,7 @@ bool RecordingSession::takeFrame() {
 QString RecordingSession::stop() {
   if (stopped_) return {};
   stopped_ = true;
-  if (live_) window_.frames().setFixedFrameRate(0.0);
+  if (live_) target_.frames.setFixedFrameRate(0.0);
   try {
     encoder_->finish();
   } catch (const video::VideoError& error) {

@@ -11,8 +11,6 @@
 
 namespace fooball::gui {
 
-class MainWindow;
-
 /// What File → Record… and `fooball --record` record.
 struct RecordingSettings {
   QString path;  ///< .mp4, .webm or .gif (video::videoFormatOf)
@@ -32,7 +30,7 @@ class RecordingSession : public QObject {
 
  public:
   /// Opens the file. Throws video::VideoError (unknown type, bad settings, unwritable path).
-  RecordingSession(MainWindow& window, const RecordingSettings& settings);
+  RecordingSession(const RecordingTarget& target, const RecordingSettings& settings);
   /// Stops (stop()), silently.
   ~RecordingSession() override;
 
@@ -70,7 +68,7 @@ class RecordingSession : public QObject {
   /// Grabs the picture and encodes it; on an error, stops and emits failed().
   bool takeFrame();
 
-  MainWindow& window_;
+  RecordingTarget target_;
   RecordingSettings settings_;
   RecordingFrameSource source_;
   std::unique_ptr<video::VideoEncoder> encoder_;

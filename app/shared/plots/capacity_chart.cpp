@@ -13,6 +13,7 @@
 #include "capacity_chart_builder.h"
 #include "chart_image.h"
 #include "offscreen_qt.h"
+#include "run_palette.h"
 
 namespace fooball::plots {
 
@@ -43,7 +44,7 @@ QChart* makeCapacityChart(std::span<const measure::CapacityResult> results,
     auto* cost = new QLineSeries;
     cost->setName(QString::fromStdString(result.backend) + ": " + countText(result.outcome.balls) +
                   " balls");
-    cost->setColor(backendColor(result.backend));
+    cost->setColor(colours::backendColour(result.backend));
     cost->setPointsVisible(true);
     cost->setMarkerSize(5.0);
     for (const measure::Probe& probe : probes) {
@@ -57,7 +58,7 @@ QChart* makeCapacityChart(std::span<const measure::CapacityResult> results,
     series.push_back(cost);
     if (result.outcome.balls > 0) {
       auto* capacity = new QScatterSeries;
-      capacity->setColor(backendColor(result.backend));
+      capacity->setColor(colours::backendColour(result.backend));
       capacity->setBorderColor(Qt::black);
       capacity->setMarkerSize(12.0);
       capacity->append(static_cast<double>(result.outcome.balls), result.outcome.medianStepMs);

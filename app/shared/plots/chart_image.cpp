@@ -13,8 +13,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "registry.h"
-
 namespace fooball::plots {
 
 namespace {
@@ -31,19 +29,6 @@ constexpr int kLeastTopExponent = -11;
 constexpr double kBottomNudge = 1.0 - 1e-9;
 
 }  // namespace
-
-QColor backendColor(std::string_view backend) {
-  static const QColor kPalette[] = {QColor(0xe0, 0xa0, 0x30), QColor(0x3a, 0x7c, 0xc8),
-                                    QColor(0x3c, 0xa0, 0x55), QColor(0xb0, 0x4a, 0xb0),
-                                    QColor(0x80, 0x80, 0x80)};
-  constexpr std::size_t kColors = std::size(kPalette);
-  std::size_t index = 0;
-  for (const BackendInfo& info : registeredBackends()) {
-    if (info.name == backend) return kPalette[std::min(index, kColors - 1)];
-    ++index;
-  }
-  return kPalette[kColors - 1];
-}
 
 double decadeBelow(double value) {
   return std::pow(10.0, std::floor(std::log10(value)));

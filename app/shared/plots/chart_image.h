@@ -1,9 +1,7 @@
 #pragma once
 
-#include <QColor>
 #include <QString>
 #include <filesystem>
-#include <string_view>
 #include <vector>
 
 class QAbstractAxis;
@@ -12,9 +10,6 @@ class QChart;
 class QLogValueAxis;
 
 namespace fooball::plots {
-
-/// The colour each backend has in every chart: the registry's order, FooBall's amber first.
-QColor backendColor(std::string_view backend);
 
 /// The powers of ten just below and just above a positive value.
 double decadeBelow(double value);

@@ -14,24 +14,17 @@
 #include "chart_image.h"
 #include "fooball/metrics.h"
 #include "offscreen_qt.h"
+#include "run_palette.h"
 
 namespace fooball::plots {
 
 namespace {
 
-/// One colour per run, in run order: FooBall's amber for run 0, then colours apart enough to
-/// tell eight runs apart. Not backendColor(): one backend may appear in several runs.
-QColor runColor(std::size_t run) {
-  static const QColor kPalette[] = {QColor(0xe0, 0xa0, 0x30), QColor(0x3a, 0x7c, 0xc8),
-                                    QColor(0x3c, 0xa0, 0x55), QColor(0xb0, 0x4a, 0xb0),
-                                    QColor(0xd0, 0x40, 0x30), QColor(0x30, 0xa0, 0xa0),
-                                    QColor(0x8a, 0x5a, 0x2a), QColor(0xe0, 0x70, 0xa0)};
-  return kPalette[run % std::size(kPalette)];
-}
-
+/// The run's colour in the app (by run order, not backend: one backend may appear in several
+/// runs); the chaos baseline dashed in its grey.
 QPen curvePen(const CompareCurve& curve, std::size_t run) {
-  if (curve.baseline) return QPen(QColor(0x80, 0x80, 0x80), 2.0, Qt::DashLine);
-  return QPen(runColor(run), 2.0);
+  if (curve.baseline) return QPen(colours::neutralColour(), 2.0, Qt::DashLine);
+  return QPen(colours::runColour(static_cast<int>(run)), 2.0);
 }
 
 QLineSeries* curveSeries(const CompareCurve& curve, std::size_t run) {

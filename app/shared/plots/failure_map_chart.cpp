@@ -16,6 +16,7 @@
 #include "failure_map_chart_builder.h"
 #include "measured_points.h"
 #include "offscreen_qt.h"
+#include "run_palette.h"
 
 namespace fooball::plots {
 
@@ -117,7 +118,7 @@ QChart* panel(const SweepSpec& spec, std::span<const SweepPoint> points, const M
   for (const auto& [backend, variant] : curvesOf(points)) {
     auto* line = new QLineSeries;
     line->setName(QString::fromStdString(variant.empty() ? backend : backend + ", " + variant));
-    line->setPen(QPen(backendColor(backend), 2.0, variantStyle(points, variant)));
+    line->setPen(QPen(colours::backendColour(backend), 2.0, variantStyle(points, variant)));
     line->setPointsVisible(true);
     std::vector<const SweepPoint*> curve;
     for (const SweepPoint& point : points) {

@@ -13,6 +13,7 @@
 #include "measured_points.h"
 #include "offscreen_qt.h"
 #include "pareto.h"
+#include "run_palette.h"
 #include "tradeoff_chart_builder.h"
 
 namespace fooball::plots {
@@ -71,7 +72,7 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
     });
     scatter->setName(QString::fromStdString(backend) +
                      (allZero ? " (error 0: at the bottom)" : ""));
-    scatter->setColor(backendColor(backend));
+    scatter->setColor(colours::backendColour(backend));
     scatter->setMarkerSize(9.0);
     std::vector<measure::CostAndError> own;
     std::vector<std::size_t> measured;
@@ -85,7 +86,7 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
     tagMeasurements(*scatter, measured);
     add(scatter, true);
     auto* front = new QLineSeries;
-    front->setPen(QPen(backendColor(backend), 2.0));
+    front->setPen(QPen(colours::backendColour(backend), 2.0));
     for (const std::size_t i : measure::paretoFront(own))
       front->append(own[i].cost, shown(own[i].error));
     add(front, false);

@@ -1,0 +1,110 @@
+#include "readouts/run_counters.h"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QLocale>
+#include <cmath>
+
+#include "run_palette.h"
+#include "widgets/number_format.h"
+
+namespace fooball::gui {
+
+namespace {
+
+const QString kNoFigure = QStringLiteral("—");
+constexpr int kLabelWidth = 70;  // px: the five columns fit the sidebar's 330 px
+
+QLabel* rightAligned(const QString& text, const QString& toolTip) {
+  auto* label = new QLabel(text);
+  label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  label->setToolTip(toolTip);
+  return label;
+}
+
+/// An overlap as a percentage of the smaller radius: "0", "<0.01 %" (rounding-level contacts),
+/// "0.31 %", "12 %", "133 %". Whole percents from 10 % up: two significant digits would write
+/// an overlap deeper than the radius, which a method beyond its limits reaches, as "1.3e+02".
+QString overlapText(double fraction) {
+  if (!(fraction > 0.0)) return QStringLiteral("0");
+  if (fraction < 1e-4) return QStringLiteral("<0.01 %");
+  const double percent = 100.0 * fraction;
+  if (percent < 9.95) return QLocale().toString(percent, 'g', 2) + QStringLiteral(" %");
+  return QLocale().toString(std::round(percent), 'f', 0) + QStringLiteral(" %");
+}
+
+}  // namespace
+
+RunCounters::RunCounters(QWidget* parent)
+    : QGroupBox(tr("Counters"), parent), grid_(new QGridLayout(this)) {
+  setObjectName(QStringLiteral("runCounters"));
+  setToolTip(tr("Since the scene was loaded or restarted, per run: what fooball-cli run reports"));
+  grid_->setHorizontalSpacing(6);
+  grid_->setVerticalSpacing(2);
+  const QStringList headers{tr("ball–ball"), tr("wall"), tr("overlap"), tr("out")};
+  const QStringList toolTips{
+      tr("Ball–ball collisions: impulses exchanged between two balls"), tr("Wall bounces"),
+      tr("Deepest overlap now, ball–ball or ball–wall, as a percentage of the smaller radius: "
+         "how far the method lets balls sink into each other"),
+      tr("Escaped: balls whose centre is outside the box now")};
+  for (int column = 0; column < headers.size(); ++column)
+    grid_->addWidget(
+        rightAligned(QStringLiteral("<b>%1</b>").arg(headers[column]), toolTips[column]), 0,
+        column + 1);
+}
+
+void RunCounters::showRuns(const QStringList& labels) {
+  if (labels == labels_ && !rows_.empty()) return;
+  labels_ = labels;
+  for (const Row& row : rows_) {
+    for (QLabel* cell :
+         {row.name, row.ballCollisions, row.wallCollisions, row.overlap, row.escaped})
+      delete cell;
+  }
+  rows_.clear();
+  for (int run = 0; run < labels.size(); ++run) {
+    // Long run specs are cut short here; the tooltip has them whole.
+    const QString shortLabel = fontMetrics().elidedText(labels[run], Qt::ElideMiddle, kLabelWidth);
+    Row row{labels[run],
+            new QLabel(QStringLiteral("<span style='color:%1'>●</span> %2")
+                           .arg(colours::runColour(run).name(), shortLabel.toHtmlEscaped())),
+            rightAligned(kNoFigure, QString()),
+            rightAligned(kNoFigure, QString()),
+            rightAligned(kNoFigure, QString()),
+            rightAligned(kNoFigure, QString())};
+    row.name->setToolTip(tr("Run %1: %2").arg(run).arg(labels[run]));
+    int column = 0;
+    for (QLabel* cell :
+         {row.name, row.ballCollisions, row.wallCollisions, row.overlap, row.escaped})
+      grid_->addWidget(cell, run + 1, column++);
+    rows_.push_back(row);
+  }
+}
+
+void RunCounters::showMetrics(const std::vector<Metrics>& metrics) {
+  for (std::size_t run = 0; run < rows_.size(); ++run) {
+    Row& row = rows_[run];
+    if (run >= metrics.size()) {
+      for (QLabel* cell : {row.ballCollisions, row.wallCollisions, row.overlap, row.escaped})
+        cell->setText(kNoFigure);
+      continue;
+    }
+    const Metrics& m = metrics[run];
+    row.ballCollisions->setText(formatCount(m.ballCollisions));
+    row.wallCollisions->setText(formatCount(m.wallCollisions));
+    row.overlap->setText(overlapText(m.maxOverlap));
+    row.escaped->setText(formatCount(m.escaped));
+  }
+}
+
+QString RunCounters::text() const {
+  QStringList lines;
+  for (const Row& row : rows_) {
+    lines.append(tr("%1: %2 ball–ball, %3 wall, overlap %4, %5 escaped")
+                     .arg(row.label, row.ballCollisions->text(), row.wallCollisions->text(),
+                          row.overlap->text(), row.escaped->text()));
+  }
+  return lines.join(QLatin1Char('\n'));
+}
+
+}  // namespace fooball::gui
