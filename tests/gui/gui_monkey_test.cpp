@@ -287,7 +287,13 @@ class GuiMonkey : public GuiTest {
     EXPECT_EQ(sidebar_->ballCountBox()->value(), static_cast<int>(group().ballCount()));
 
     // Running again, the clock, the status bar and the charts move on, every step waited for.
-    if (runs().stepping()) pause_->trigger();  // gives the step in flight up
+    // Pausing gives the step in flight up; a single step taken while paused is out with the
+    // runs paused, so they continue first (a continue alone would leave it out, and a frame
+    // does not wait for a step that is already out).
+    if (runs().stepping()) {
+      if (runs().paused()) pause_->trigger();
+      pause_->trigger();
+    }
     if (runs().paused()) pause_->trigger();
     runs().setStepPatience(RunController::kWaitForEveryStep);
     // Enough frames that step for a new chart sample (one every 3); at the slowest speed
@@ -299,7 +305,9 @@ class GuiMonkey : public GuiTest {
       frames(1);
       if (group().time() > frameStart) ++steppingFrames;
     }
-    ASSERT_GT(group().time(), before);
+    ASSERT_GT(group().time(), before)
+        << (runs().paused() ? "paused" : "running") << (runs().stepping() ? ", a step out" : "")
+        << "; errors shown: " << errors.join(QStringLiteral(" | ")).toStdString();
     window->updateStatusBar();
     const QString ballsText = QObject::tr("%L1 balls").arg(group().ballCount());
     const QString timeText = QObject::tr("t = %1 s").arg(group().time(), 0, 'f', 2);
