@@ -33,6 +33,8 @@ constexpr QRgb kWhite = 0xf5f5f5;
 /// Below this relative luminance (WCAG) a colour's contrast with the near-black plot (#050507)
 /// is under 4.5, the least for text.
 constexpr double kLeastLuminance = 0.18;
+/// QColor's HSV saturation (0-255) below which a colour reads as a grey, like the baseline's.
+constexpr int kLeastSaturation = 100;
 
 double distance(const QColor& a, const QColor& b) {
   return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
@@ -63,7 +65,9 @@ std::vector<QColor> distinctColours(std::size_t count) {
   for (int hue = 0; hue < 360; hue += 6) {
     for (const float lightness : {0.6f, 0.7f, 0.8f}) {
       const QColor candidate = QColor::fromHslF(float(hue) / 360.0f, 0.9f, lightness).toRgb();
-      if (luminance(candidate) >= kLeastLuminance) candidates.push_back(candidate);
+      // Readable on black, and a hue rather than a grey (light colours lose saturation).
+      if (luminance(candidate) >= kLeastLuminance && candidate.saturation() >= kLeastSaturation)
+        candidates.push_back(candidate);
     }
   }
   const QColor white(kWhite);
