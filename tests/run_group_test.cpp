@@ -19,6 +19,7 @@
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
+#include "forwarding_backend.h"
 #include "registry.h"
 #include "test_scenes.h"
 
@@ -714,25 +715,16 @@ TEST(RunGroup, AbandonedStepsLeaveEveryRunWhereItWasAndTheRunsGoOn) {
 
 /// Forwards to a real backend and throws from its kFailingStep-th step on, as an engine whose
 /// process died does (node_host::HostError).
-class DyingBackend final : public Backend {
+class DyingBackend final : public testing::ForwardingBackend {
  public:
   static constexpr int kFailingStep = 10;
-  explicit DyingBackend(std::unique_ptr<Backend> inner) : Backend({}), inner_(std::move(inner)) {}
-  void load(const Scene& scene) override { inner_->load(scene); }
-  void setWorld(const WorldSettings& world) override { inner_->setWorld(world); }
+  using ForwardingBackend::ForwardingBackend;
   void step(double dt, std::span<const Vec2> forces) override {
     if (++steps_ >= kFailingStep) throw std::runtime_error("dying: the engine's process died");
-    inner_->step(dt, forces);
+    ForwardingBackend::step(dt, forces);
   }
-  void setBall(std::size_t index, const BallDef& ball) override { inner_->setBall(index, ball); }
-  std::size_t ballCount() const override { return inner_->ballCount(); }
-  void readState(std::span<Vec2> positions, std::span<Vec2> velocities) const override {
-    inner_->readState(positions, velocities);
-  }
-  BackendCounters counters() const override { return inner_->counters(); }
 
  private:
-  std::unique_ptr<Backend> inner_;
   int steps_ = 0;
 };
 

@@ -19,6 +19,7 @@
 #include "fooball/metrics.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
+#include "forwarding_backend.h"
 #include "registry.h"
 #include "test_scenes.h"
 
@@ -134,25 +135,16 @@ TEST(Simulation, SetDtRejectsNonPositiveAndNonFiniteSteps) {
 
 /// Forwards to a real backend but refuses to step more than `limit` times, so a runaway loop in
 /// the driver fails the test at once instead of hanging it.
-class StepLimitedBackend final : public Backend {
+class StepLimitedBackend final : public testing::ForwardingBackend {
  public:
   StepLimitedBackend(std::unique_ptr<Backend> inner, int limit)
-      : Backend({}), inner_(std::move(inner)), stepsLeft_(limit) {}
-  void load(const Scene& scene) override { inner_->load(scene); }
-  void setWorld(const WorldSettings& world) override { inner_->setWorld(world); }
+      : ForwardingBackend(std::move(inner)), stepsLeft_(limit) {}
   void step(double dt, std::span<const Vec2> forces) override {
     if (--stepsLeft_ < 0) throw std::runtime_error("runaway: more steps than the test allows");
-    inner_->step(dt, forces);
+    ForwardingBackend::step(dt, forces);
   }
-  void setBall(std::size_t index, const BallDef& ball) override { inner_->setBall(index, ball); }
-  std::size_t ballCount() const override { return inner_->ballCount(); }
-  void readState(std::span<Vec2> positions, std::span<Vec2> velocities) const override {
-    inner_->readState(positions, velocities);
-  }
-  BackendCounters counters() const override { return inner_->counters(); }
 
  private:
-  std::unique_ptr<Backend> inner_;
   int stepsLeft_;
 };
 
