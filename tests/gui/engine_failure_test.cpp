@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "test_scenes.h"
 
@@ -73,6 +74,9 @@ TEST_F(EngineFailure, KillNineOfAHostMidRunStopsThatRunWithOneMessageAndTheOther
       << errors[0].toStdString();
   ASSERT_EQ(runs().runCount(), 1);
   EXPECT_EQ(runs().label(0), QStringLiteral("elastic"));
+  EXPECT_EQ(window->charts()->runCount(), 1) << "the charts keep no curve of the stopped run";
+  EXPECT_FALSE(window->charts()->runLegendText().contains(QStringLiteral("matter")))
+      << window->charts()->runLegendText().toStdString();
   EXPECT_EQ(group().ballCount(), 40u) << "the scene is kept";
   EXPECT_FALSE(runs().paused());
   const double after = group().time();

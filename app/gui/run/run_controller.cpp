@@ -222,10 +222,14 @@ bool RunController::collectSteps(std::chrono::milliseconds patience) {
 }
 
 void RunController::reportFailures(const std::vector<RunGroup::StepFailure>& failures) {
-  const bool removed = group_.runCount() < timing_.size();
+  const bool removing = group_.runCount() < timing_.size();
   QStringList lines;
+  QList<int> removed;
   for (auto failure = failures.rbegin(); failure != failures.rend(); ++failure) {
-    if (removed && failure->run) timing_.erase(timing_.begin() + std::ptrdiff_t(*failure->run));
+    if (removing && failure->run) {
+      timing_.erase(timing_.begin() + std::ptrdiff_t(*failure->run));
+      removed.append(int(*failure->run));
+    }
     lines.prepend(
         tr("%1 stopped: %2")
             .arg(QString::fromStdString(failure->label), QString::fromStdString(failure->message)));
@@ -233,7 +237,7 @@ void RunController::reportFailures(const std::vector<RunGroup::StepFailure>& fai
   matchWorkersToRuns();
   emit runsChanged();
   if (group_.paused()) emit pausedChanged(true);
-  emit runsFailed(lines.join(QLatin1Char('\n')));
+  emit runsFailed(lines.join(QLatin1Char('\n')), removed);
 }
 
 void RunController::settle() {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QList>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -145,9 +146,10 @@ class RunController : public QObject {
   void rewound(double time);
   void selectionChanged(std::optional<std::size_t> index);
   /// Runs' steps failed (an engine's process died, say): one line each, "SPEC stopped: WHY".
-  /// Those runs are gone and the others go on; if every run failed, the runs are back where the
-  /// step began and paused (RunGroup::finishSteps).
-  void runsFailed(const QString& lines);
+  /// The runs at `removed` (their indices before, highest first) are gone and the others go on;
+  /// if every run failed, none is removed: they are back where the step began, paused
+  /// (RunGroup::finishSteps).
+  void runsFailed(const QString& lines, const QList<int>& removed);
 
  private:
   /// Runs `steps` steps of every run, calling `whileFirstStepRuns` (if set) while the first is

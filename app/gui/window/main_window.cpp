@@ -212,14 +212,17 @@ void MainWindow::connectRuns() {
     updateStatusBar();
     view_->update();
   });
+  connect(runs_.get(), &RunController::runsFailed, this,
+          [this](const QString&, const QList<int>& removed) {
+            for (const int index : removed)
+              feed_->removeRun(index);
+            feed_->markAt(runs_->group().time(), tr("a run stopped"));
+          });
   // Queued: the message box's own event loop must not run inside the frame that collected the
   // failed step.
   connect(
       runs_.get(), &RunController::runsFailed, this,
-      [this](const QString& lines) {
-        charts_->addMarker(runs_->group().time(), tr("a run stopped"));
-        reportError_(tr("A run stopped"), lines);
-      },
+      [this](const QString& lines) { reportError_(tr("A run stopped"), lines); },
       Qt::QueuedConnection);
   connect(runs_.get(), &RunController::runsRestarted, this, [this](double time) {
     feed_->markAt(time, tr("runs restarted identical"));
