@@ -407,15 +407,7 @@ std::vector<RunGroup::StepFailure> RunGroup::finishSteps(std::vector<BackendStep
       failures.push_back({i, runs_[i].spec.text(), steps[i].failure()});
     }
   }
-  if (failures.empty()) {
-    std::size_t next = 0;
-    forEachSimulation(
-        [&](Simulation& simulation) { simulation.finishStep(std::move(steps[next++])); });
-    steps.clear();
-    recordHistory();
-    return failures;
-  }
-  if (failedRuns.size() == runs_.size()) {
+  if (!failedRuns.empty() && failedRuns.size() == runs_.size()) {
     // Nothing to go on with: back to the state before the step, in lockstep, paused.
     steps.clear();
     for (Run& run : runs_)
@@ -431,6 +423,10 @@ std::vector<RunGroup::StepFailure> RunGroup::finishSteps(std::vector<BackendStep
     if (step.failure().empty()) simulation.finishStep(std::move(step));
   });
   steps.clear();
+  if (failures.empty()) {
+    recordHistory();
+    return failures;
+  }
   for (auto index = failedRuns.rbegin(); index != failedRuns.rend(); ++index)
     runs_.erase(runs_.begin() + static_cast<std::ptrdiff_t>(*index));
   // A baseline is run 0's copy: it starts again from the new run 0, or where its own step failed.

@@ -197,6 +197,8 @@ int RunController::stepRuns(int steps, std::chrono::milliseconds patience,
       group_.dropBacklog();  // a slow step: no catching up after it
       return finished;
     }
+    // Every run failed (RunGroup::finishSteps): they are paused where that step began.
+    if (group_.paused()) return finished;
   }
   return steps;
 }
