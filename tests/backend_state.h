@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "fooball/backend.h"
@@ -11,6 +12,10 @@ struct State {
   std::vector<Vec2> positions;   ///< m
   std::vector<Vec2> velocities;  ///< m/s
 };
+
+inline std::vector<Vec2> copyOf(std::span<const Vec2> values) {
+  return {values.begin(), values.end()};
+}
 
 inline State readState(const Backend& backend) {
   State state{std::vector<Vec2>(backend.ballCount()), std::vector<Vec2>(backend.ballCount())};

@@ -28,7 +28,7 @@ using testing::emptyBox;
 using testing::readState;
 using testing::State;
 
-constexpr double kDt = 1.0 / 60.0;  // s
+using testing::kDt;
 
 void run(Backend& backend, double seconds) {
   const auto steps = static_cast<int>(std::lround(seconds / kDt));

@@ -108,7 +108,7 @@ TEST(ElasticLaneTest, TheCpusLaneTestResolvesTheSamePairsAsScalarBitForBit) {
     std::vector<Ball> balls = denseBalls(seed, false);
     // Three searches, each on a grid rebuilt from where the last one left the balls.
     for (int search = 0; search < 3; ++search) {
-      SCOPED_TRACE(testing::Message() << "seed " << seed << ", search " << search);
+      SCOPED_TRACE(::testing::Message() << "seed " << seed << ", search " << search);
       const Searched searched = searchWithBoth(balls);
       // Enough collisions that any lane tested wrongly changes some ball.
       EXPECT_GT(searched.scalarImpulses, 200u);

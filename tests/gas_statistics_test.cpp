@@ -6,18 +6,15 @@
 #include <numeric>
 #include <vector>
 
+#include "backend_factory.h"
 #include "fooball/run_group.h"
-#include "registry.h"
 #include "test_scenes.h"
 
 namespace fooball {
 namespace {
 
 using testing::gas;
-
-std::unique_ptr<Backend> makeBackend(const RunSpec& spec) {
-  return createBackend(spec);
-}
+using testing::makeBackend;
 
 std::size_t total(const std::vector<std::size_t>& counts) {
   return std::accumulate(counts.begin(), counts.end(), std::size_t{0});

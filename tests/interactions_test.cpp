@@ -20,8 +20,8 @@ namespace {
 using testing::ball;
 using testing::emptyBox;
 
-constexpr double kDt = 1.0 / 60.0;  // s
-constexpr double kRounding = 1e-12;
+using testing::kDt;
+using testing::kRounding;
 
 /// Balls as a test builds them; view() is what the interactions see.
 struct TestBalls {

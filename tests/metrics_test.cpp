@@ -18,7 +18,7 @@
 namespace fooball {
 namespace {
 
-constexpr double kRounding = 1e-12;
+using testing::kRounding;
 
 TEST(Metrics, SumStateGivesHandComputedEnergyMomentumAndCentreOfMass) {
   const std::vector<Vec2> positions = {{1.0, 3.0}, {5.0, -1.0}};

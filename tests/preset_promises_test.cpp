@@ -23,7 +23,7 @@ namespace {
 constexpr double kAppDt = 1.0 / 60.0;  // s: the app steps one frame of 60 Hz per step
 /// Relative energy change allowed where the method conserves energy exactly but for rounding:
 /// 1e-15 per operation over 10⁴–10⁶ collisions stays far below this.
-constexpr double kRounding = 1e-9;
+constexpr double kRoundingOverARun = 1e-9;
 
 /// The preset on the app's default backend (the registry's first) with its default options.
 Simulation appDefault(std::string_view preset) {
@@ -61,8 +61,8 @@ TEST(PresetPromises, DefaultTradesKineticForPotentialEnergyAndKeepsTheirSum) {
     const Metrics metrics = simulation.metrics(GeometryChecks::Skip);
     lowestKinetic = std::min(lowestKinetic, metrics.sums.kineticEnergy);
     highestKinetic = std::max(highestKinetic, metrics.sums.kineticEnergy);
-    EXPECT_NEAR(metrics.sums.totalEnergy(), initial, kRounding * initial);
-    EXPECT_NEAR(metrics.energyResidual, 0.0, kRounding * initial);
+    EXPECT_NEAR(metrics.sums.totalEnergy(), initial, kRoundingOverARun * initial);
+    EXPECT_NEAR(metrics.energyResidual, 0.0, kRoundingOverARun * initial);
   }
   // The trade is visible: the kinetic share swings by more than a tenth of the total.
   EXPECT_GT(highestKinetic - lowestKinetic, 0.1 * initial);
@@ -105,7 +105,7 @@ TEST(PresetPromises, GasRelaxesToMaxwellBoltzmannGrowingTailsNoBallStartedIn) {
   // The tails no ball started in fill as Maxwell–Boltzmann says (about 10% of the balls): half
   // the expected count is several standard deviations of the snapshots' mean below it.
   EXPECT_GT(outside / kSnapshots, 0.5 * expectedOutside);
-  EXPECT_NEAR(totalEnergy(simulation), initial, kRounding * initial);
+  EXPECT_NEAR(totalEnergy(simulation), initial, kRoundingOverARun * initial);
 }
 
 TEST(PresetPromises, HeadOnBallsSwapVelocities) {
@@ -114,8 +114,8 @@ TEST(PresetPromises, HeadOnBallsSwapVelocities) {
   const Vec2 before1 = simulation.velocities()[1];
   stepToFirstCollision(simulation, 5.0);
   const double speed = length(before0);
-  EXPECT_LT(length(simulation.velocities()[0] - before1), kRounding * speed);
-  EXPECT_LT(length(simulation.velocities()[1] - before0), kRounding * speed);
+  EXPECT_LT(length(simulation.velocities()[0] - before1), kRoundingOverARun * speed);
+  EXPECT_LT(length(simulation.velocities()[1] - before0), kRoundingOverARun * speed);
 }
 
 TEST(PresetPromises, GlancingBallsLeaveAtRightAngles) {
@@ -125,7 +125,7 @@ TEST(PresetPromises, GlancingBallsLeaveAtRightAngles) {
   const Vec2 striker = simulation.velocities()[0];
   const Vec2 target = simulation.velocities()[1];
   // Right angles: the cosine between them is 0 up to rounding.
-  EXPECT_NEAR(dot(striker, target) / lengthSquared(incoming), 0.0, kRounding);
+  EXPECT_NEAR(dot(striker, target) / lengthSquared(incoming), 0.0, kRoundingOverARun);
   // A real glancing hit: both leave with a good part of the speed (not a miss, not head-on).
   EXPECT_GT(length(striker), 0.1 * length(incoming));
   EXPECT_GT(length(target), 0.1 * length(incoming));
@@ -139,9 +139,10 @@ TEST(PresetPromises, CradlePassesTheMomentumToTheLastBallAlone) {
   runFor(simulation, 1.5);
   EXPECT_EQ(simulation.counters().wallCollisions, 0u);
   EXPECT_EQ(simulation.counters().ballCollisions, last);  // one hit per pair along the row
-  EXPECT_LT(length(simulation.velocities()[last] - strike), kRounding * length(strike));
+  EXPECT_LT(length(simulation.velocities()[last] - strike), kRoundingOverARun * length(strike));
   for (std::size_t i = 0; i < last; ++i)
-    EXPECT_LT(length(simulation.velocities()[i]), kRounding * length(strike)) << "ball " << i;
+    EXPECT_LT(length(simulation.velocities()[i]), kRoundingOverARun * length(strike))
+        << "ball " << i;
 }
 
 TEST(PresetPromises, BilliardsBreakSetsAllSixteenMovingWithinTwentySeconds) {
@@ -159,7 +160,7 @@ TEST(PresetPromises, BilliardsBreakSetsAllSixteenMovingWithinTwentySeconds) {
   // Moving, not creeping: 5% of the cue's speed crosses the box in under 30 s.
   for (std::size_t i = 0; i < simulation.ballCount(); ++i)
     EXPECT_GT(fastest[i], 0.05 * cueSpeed) << "ball " << i;
-  EXPECT_NEAR(totalEnergy(simulation), initial, kRounding * initial);
+  EXPECT_NEAR(totalEnergy(simulation), initial, kRoundingOverARun * initial);
 }
 
 TEST(PresetPromises, MassRatioCountsThirtyOneCollisionsOneFrameApartAtLeast) {
@@ -227,7 +228,7 @@ TEST(PresetPromises, DenseCollidesOverTenThousandTimesASecondWithSmallOverlaps) 
   // 0.1 r the failure map counts as failing).
   EXPECT_GT(deepest, 0.0);
   EXPECT_LT(deepest, 0.1);
-  EXPECT_NEAR(totalEnergy(simulation), initial, kRounding * initial);
+  EXPECT_NEAR(totalEnergy(simulation), initial, kRoundingOverARun * initial);
 }
 
 TEST(PresetPromises, RainSettlesIntoAPileWithinTwentyFiveSeconds) {

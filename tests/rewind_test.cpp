@@ -9,16 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "backend_factory.h"
 #include "fooball/run_group.h"
-#include "registry.h"
 #include "test_scenes.h"
 
 namespace fooball {
 namespace {
 
-std::unique_ptr<Backend> makeBackend(const RunSpec& spec) {
-  return createBackend(spec);
-}
+using testing::makeBackend;
 
 /// 3 big balls and 200 small ones falling under gravity in a 16 × 9 m box: ball and wall
 /// collisions every step, and cells holding many balls (where elastic's storage order, which it

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "backend_factory.h"
+#include "backend_state.h"
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
@@ -27,15 +29,13 @@ namespace fooball {
 namespace {
 
 using testing::ball;
+using testing::copyOf;
 using testing::emptyBox;
 using testing::gas;
 using ::testing::HasSubstr;
-
-constexpr double kDt = 1.0 / 60.0;  // s, the default step
-
-std::unique_ptr<Backend> makeBackend(const RunSpec& spec) {
-  return createBackend(spec);
-}
+using testing::kDt;
+using testing::makeBackend;
+using testing::threeBalls;
 
 std::vector<RunSpec> specsOf(std::initializer_list<const char*> texts) {
   std::vector<RunSpec> specs;
@@ -48,18 +48,6 @@ RunGroup groupOf(const Scene& scene, std::initializer_list<const char*> texts) {
   return RunGroup(scene, specsOf(texts), &makeBackend);
 }
 
-/// Three balls of different sizes, masses and colours, apart from each other and the walls.
-Scene threeBalls() {
-  Scene scene = emptyBox();
-  scene.name = "three balls";
-  scene.balls = {ball({3.0, 4.5}, {2.0, 1.0}, 0.5), ball({8.0, 2.0}, {-1.0, 0.5}, 0.3, 2.0),
-                 ball({12.0, 6.0}, {0.0, -1.5}, 0.4)};
-  scene.balls[0].color = 0xff0000;
-  scene.balls[1].color = 0x00ff00;
-  scene.balls[2].color = 0x0000ff;
-  return scene;
-}
-
 /// Every run of the group, then the baseline if there is one.
 std::vector<const Simulation*> everySimulation(const RunGroup& group) {
   std::vector<const Simulation*> simulations;
@@ -67,10 +55,6 @@ std::vector<const Simulation*> everySimulation(const RunGroup& group) {
     simulations.push_back(&group.run(i));
   if (group.baseline() != nullptr) simulations.push_back(group.baseline());
   return simulations;
-}
-
-std::vector<Vec2> copyOf(std::span<const Vec2> values) {
-  return {values.begin(), values.end()};
 }
 
 void expectBitwiseSame(const Simulation& a, const Simulation& b) {

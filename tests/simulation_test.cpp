@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "backend_state.h"
 #include "fooball/metrics.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
@@ -27,22 +28,11 @@ namespace fooball {
 namespace {
 
 using testing::ball;
+using testing::copyOf;
 using testing::emptyBox;
 using testing::gas;
-
-constexpr double kDt = 1.0 / 60.0;  // s, the default step
-
-/// Three balls of different sizes, masses and colours, apart from each other and the walls.
-Scene threeBalls() {
-  Scene scene = emptyBox();
-  scene.name = "three balls";
-  scene.balls = {ball({3.0, 4.5}, {2.0, 1.0}, 0.5), ball({8.0, 2.0}, {-1.0, 0.5}, 0.3, 2.0),
-                 ball({12.0, 6.0}, {0.0, -1.5}, 0.4)};
-  scene.balls[0].color = 0xff0000;
-  scene.balls[1].color = 0x00ff00;
-  scene.balls[2].color = 0x0000ff;
-  return scene;
-}
+using testing::kDt;
+using testing::threeBalls;
 
 Simulation elasticSimulation(const Scene& scene) {
   return Simulation(scene, createBackend("elastic"));
@@ -66,10 +56,6 @@ void expectSameState(const Simulation& simulation, const std::vector<Vec2>& posi
     EXPECT_EQ(simulation.positions()[i], positions[i]) << "ball " << i;
     EXPECT_EQ(simulation.velocities()[i], velocities[i]) << "ball " << i;
   }
-}
-
-std::vector<Vec2> copyOf(std::span<const Vec2> values) {
-  return {values.begin(), values.end()};
 }
 
 /// The positions the backend itself reports (readState), not the driver's copy of them.

@@ -32,6 +32,22 @@ inline Scene emptyBox(double width = 16.0, double height = 9.0) {
 }
 
 /// `count` random balls (radius 0.1–0.2 m, speed 0.5–3 m/s) in a 16 × 9 m box.
+inline constexpr double kDt = 1.0 / 60.0;  ///< s, the default step
+/// Relative: the error of a few dozen double operations.
+inline constexpr double kRounding = 1e-12;
+
+/// Three balls of different sizes, masses and colours, apart from each other and the walls.
+inline Scene threeBalls() {
+  Scene scene = emptyBox();
+  scene.name = "three balls";
+  scene.balls = {ball({3.0, 4.5}, {2.0, 1.0}, 0.5), ball({8.0, 2.0}, {-1.0, 0.5}, 0.3, 2.0),
+                 ball({12.0, 6.0}, {0.0, -1.5}, 0.4)};
+  scene.balls[0].color = 0xff0000;
+  scene.balls[1].color = 0x00ff00;
+  scene.balls[2].color = 0x0000ff;
+  return scene;
+}
+
 inline Scene gas(std::size_t count, std::uint64_t seed = 7, double width = 16.0,
                  double height = 9.0) {
   Scene scene = emptyBox(width, height);

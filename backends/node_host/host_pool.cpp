@@ -33,4 +33,12 @@ void HostPool::giveBack(std::unique_ptr<NodeHost> host) {
     surplus = std::move(host);
 }
 
+void HostPool::clear() {
+  std::map<std::string, std::vector<std::unique_ptr<NodeHost>>, std::less<>> ended;  // outside
+  {
+    const std::lock_guard lock(mutex_);
+    ended.swap(idle_);
+  }
+}
+
 }  // namespace fooball::node_host

@@ -29,6 +29,9 @@ class HostPool {
   /// Keeps `host` for the next take() of its engine, emptied of its scene first (a host that
   /// fails to empty, or one too many, ends).
   void giveBack(std::unique_ptr<NodeHost> host);
+  /// Ends every kept host: for a process that must have no idle node children, such as a test
+  /// that kills and counts them after other tests in the same process kept theirs.
+  void clear();
 
  private:
   std::mutex mutex_;

@@ -15,7 +15,7 @@
 namespace fooball {
 namespace {
 
-constexpr double kDt = 1.0 / 60.0;  // s
+using testing::kDt;
 
 /// A finite box reads a little above the bulk theory: the walls order the disks next to them,
 /// which presses harder, by about 0.8·r·L/A (r the radius, L the walls' length, A the area):

@@ -23,7 +23,7 @@ namespace {
 
 using testing::BackendPair;
 
-constexpr double kDt = 1.0 / 60.0;  // s
+using testing::kDt;
 constexpr double kRadius = 0.15;    // m, every ball: equal masses, so one kT fits all speeds
 constexpr double kAlpha = 1e-3;     // significance of the KS tests
 

@@ -29,7 +29,7 @@ using testing::MethodError;
 using testing::Motion;
 using testing::State;
 
-constexpr double kDt = 1.0 / 60.0;  // s, the app's frame step
+using testing::kDt;
 
 /// How far one backend's ball may lie from the closed form, per axis: m and m/s.
 struct Bound {

@@ -13,6 +13,7 @@
 
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
+#include "host_pool.h"
 #include "test_scenes.h"
 
 namespace fooball::gui::testing {
@@ -48,6 +49,13 @@ bool reaped(const std::vector<pid_t>& pids) {
 
 class EngineFailure : public GuiTest {
  protected:
+  /// Hosts kept by earlier tests in this process would be killed too and wait unreaped in the
+  /// pool: each test starts with none.
+  void SetUp() override {
+    node_host::HostPool::instance().clear();
+    GuiTest::SetUp();
+  }
+
   /// Frames until the failure's message has come (it is queued after the frame).
   bool framesUntilAnError() {
     return waitUntil(
