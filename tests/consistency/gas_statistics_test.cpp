@@ -24,8 +24,8 @@ namespace {
 using testing::BackendPair;
 
 using testing::kDt;
-constexpr double kRadius = 0.15;    // m, every ball: equal masses, so one kT fits all speeds
-constexpr double kAlpha = 1e-3;     // significance of the KS tests
+constexpr double kRadius = 0.15;  // m, every ball: equal masses, so one kT fits all speeds
+constexpr double kAlpha = 1e-3;   // significance of the KS tests
 
 /// 300 equal balls in the 16 × 9 m box, 15% of its area: a dilute gas whose collision time
 /// (≈ 0.26 s, see collisionRateEnskog) is short next to the run. Speeds start uniform in
