@@ -1,33 +1,42 @@
 // Balls resting on balls. As drag cools a pile under gravity, each ball's hops on the balls below
 // it get ever shorter, and an event-driven solver must take every one: the collision rate grows
-// without bound and a step never ends (issue 39: rain took 24 s of wall-clock for its 25th to
-// 30th simulated second and did not reach 40 s in 400 s). Walls have their rest rule (bounce,
+// without bound and a step never ends (issue 39: rain's 20th to 30th simulated second took 36 s
+// of wall-clock, and 40 s were not reached in 600 s). Walls have their rest rule (bounce,
 // layToRest); this is the rule for balls, after the sleeping islands of rigid-body engines and
 // event-driven granular codes (a body below a speed threshold sleeps where it is held; a faster
 // hit wakes it) and in the spirit of Luding & McNamara's TC model (a contact that would recur
-// within t_c follows another rule). With t the option ball_rest_time, g = |gravity| and
-// v_rest = g·t/2 (a hop at v_rest returns within t):
+// within t_c follows another rule). With t the option ball_rest_time, g = |gravity|,
+// v_rest = g·t/2 (a hop at v_rest returns within t) and v_sleep = 2·v_rest:
 //
-// - Sleep: a ball no faster than v_rest after an event, held against gravity by the walls and
-//   sleeping balls it touches (within g·t²/2, the fall of a hop of t), stops: velocity 0, no
-//   gravity felt, no events of its own. Held is the frictionless balance of one ball on fixed
-//   supports: "up" lies in the cone of the support normals (the floor; a pocket between two
-//   balls; a ball and a side wall). A ball on a single ball's flank is not held and slides off.
-//   Energy: −½m|v|² ≥ −½m·v_rest², booked.
-// - A ball meeting a sleeping ball: it falls asleep if it may; a hit faster than v_rest wakes the
-//   sleeper (and the sleepers it alone held, in turn) and the two collide as two moving balls;
-//   a slower hit reflects the ball off the sleeper as off a fixed wall, the pile passing the
-//   impulse to the walls (wallImpulse), leaving at max(u, v_rest) (u the approach speed).
+// - Sleep: a ball no faster than v_sleep after an event, held against gravity by the walls and
+//   sleeping balls it touches (within v_sleep²/2g, the height of a hop at v_sleep), stops where
+//   it is (laid onto a wall it presses on within that gap, as layToRest): velocity 0, no gravity
+//   felt, no events of its own. Held is the frictionless balance of one ball on fixed supports:
+//   "up" lies in the cone of the support normals (the floor; a pocket between two balls; a ball
+//   and a side wall); a ball on one ball's flank is not held and slides off. Energy: at most
+//   m·v_sleep² (½m|v|² and the lay onto a wall), booked.
+// - A moving ball meeting a sleeping one: it falls asleep if it may; a hit faster than the
+//   pocket-escape speed √(2g(2 − √3)r) (wakeSpeed) wakes the sleeper (and, in turn, the
+//   sleepers it alone held) and the two collide as moving balls; a slower hit cannot rearrange
+//   the pile, which answers it as one body: the ball reflects off the sleeper as off a fixed
+//   wall, leaving at max(u, v_rest) (u its approach speed), and the walls take the impulse
+//   (wallImpulse). Energy: ½m(max(u, v_rest)² − u²) ≤ ½m·v_rest², booked.
 // - Two moving balls that feel different gravity (one rests on a wall) leave a contact at a
-//   normal speed of at least |Δg|·t/2, momentum conserved. Without this a pair pressed together
+//   normal speed of at least |Δg|·t/2, momentum conserved. Without it a pair pressed together
 //   by its relative gravity and not approaching is predicted to touch again at once, for ever:
 //   each event must change the state so that the same pair is not met again at that instant.
-//   Energy: ½μ(w² − u²), at most ½μ(|Δg|·t/2)², booked (μ the reduced mass).
-//   Pairs under the same gravity fly straight relative to each other and are never touched by
-//   this rule, so every result where no ball rests is the same bit for bit.
-// - Waking: a hit faster than v_rest, a force (a mouse tool), and anything that rebuilds the
-//   calendar (an edit, a change of the world, a cut-short step), which wakes every ball; they
-//   fall back asleep at their next events where they are still held and slow.
+//   Energy: ½μ(w² − u²) ≤ ½μ(|Δg|·t/2)², booked (μ the reduced mass).
+//   The kicks leave at v_rest and a ball sleeps at up to 2·v_rest, so a ball hopping on
+//   sleepers after a kick can fall asleep at its next contact rather than be kicked for ever.
+// - Pairs under the same gravity fly straight relative to each other and no rule touches
+//   them, so every result where no ball rests is the same bit for bit.
+// - Waking: a hit faster than the pocket-escape speed, a force (a mouse tool), and anything that
+//   rebuilds the calendar (an edit, a change of the world or of this option, a cut-short step),
+//   which wakes every ball; they fall asleep again at their next events where still held and
+//   slow.
+// - Cost: a sleeping ball has no events; a moving ball's search for its contact with a sleeping
+//   neighbour (a curved relative path, acceleratedPairContact) stops at the ball's next cell
+//   crossing, where it is predicted afresh.
 // Every rule is arithmetic on the state in event order: deterministic.
 
 #include <algorithm>
@@ -41,7 +50,8 @@ namespace fooball::exact {
 void EventDrivenWorld::updateRestScales() {
   const double gravity = length(world_.gravity);
   restSpeed_ = 0.5 * gravity * limits_.ballRestTime;
-  supportGap_ = 0.5 * gravity * limits_.ballRestTime * limits_.ballRestTime;
+  sleepSpeed_ = 2.0 * restSpeed_;
+  supportGap_ = gravity > 0.0 ? sleepSpeed_ * sleepSpeed_ / (2.0 * gravity) : 0.0;
 }
 
 /// m/s, the slowest hit that wakes `sleeper`: one that could lift it out of a hexagonal pocket of
@@ -137,18 +147,29 @@ bool EventDrivenWorld::held(std::uint32_t ball) const {
   return straightUp || left + right < std::numbers::pi;
 }
 
-/// Puts the ball (advanced to now) to sleep where it is, if it is slow and held; only its kinetic
-/// energy changes. The caller predicts it again.
+/// Puts the ball (advanced to now) to sleep where it is, if it is slow and held, laid onto the
+/// walls gravity presses it against (as layToRest: within supportGap_, so the potential energy
+/// changes by at most m·v_rest²/2 besides the kinetic ½m|v|² ≤ ½m·v_rest²). The caller predicts
+/// it again.
 bool EventDrivenWorld::trySleep(std::uint32_t ball) {
   if (!sleepActive() || asleep(ball)) return false;
   BallMotion& motion = balls_[ball];
   const double speedSquared = lengthSquared(motion.velocity);
-  if (speedSquared > restSpeed_ * restSpeed_ || !held(ball)) return false;
+  if (speedSquared > sleepSpeed_ * sleepSpeed_ || !held(ball)) return false;
   const double mass = mass_[ball];
   statistics_.restEnergyChange -= 0.5 * mass * speedSquared;
-  statistics_.restEnergyBound += 0.5 * mass * restSpeed_ * restSpeed_;
+  statistics_.restEnergyBound += mass * sleepSpeed_ * sleepSpeed_;
   ++statistics_.sleeps;
   motion.velocity = {};
+  for (int side = 0; side < 4; ++side) {
+    const Side wall = static_cast<Side>(side);
+    const int axis = axisOf(wall);
+    const double inward = isLowerSide(wall) ? 1.0 : -1.0;
+    const double gap =
+        inward * (component(motion.position, axis) - contactCoordinate(wall, motion.radius));
+    if (wallOn(wall) && gap <= supportGap_ && inward * component(world_.gravity, axis) < 0.0)
+      layToRest(ball, wall);
+  }
   ++motion.version;
   setRestBits(ball, static_cast<std::uint8_t>(restingOn_[ball] | kAsleep));
   return true;

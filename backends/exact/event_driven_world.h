@@ -21,10 +21,10 @@ struct EventLimits {
   /// gravity's normal component from then on. Without it a ball lying on the floor within
   /// rounding bounces at an unbounded rate.
   double restBounceTime = 1e-6;
-  /// s. Balls resting on balls (ball_rest.cpp): a ball slower than |g|·t/2 that walls and
-  /// sleeping balls hold against gravity falls asleep, and a pair pressed together by different
-  /// gravity (one asleep or on a wall) leaves a contact at least |Δg|·t/2 apart, so its next
-  /// contact is at least about t away. 0: balls never sleep and contacts stay elastic.
+  /// s. Balls resting on balls (ball_rest.cpp): a ball slower than |g|·t that walls and sleeping
+  /// balls hold against gravity falls asleep, and a pair feeling different gravity (one asleep
+  /// or on a wall) leaves a contact at |Δg|·t/2 at least, so its next contact is about t away.
+  /// 0: balls never sleep and contacts stay elastic.
   double ballRestTime = kDefaultBallRestTime;
   static constexpr double kDefaultBallRestTime = 1e-2;
   /// Average events per ball in one step (counted as for at least 500 balls) before the step is
@@ -44,9 +44,9 @@ struct EventStatistics {
   /// J, energy changed by the rest rules: laying balls to rest on walls, putting them to sleep
   /// and the least speed a pressed pair leaves a contact with (ball_rest.cpp).
   double restEnergyChange = 0.0;
-  /// J, what restEnergyChange may reach in size: Σ ½m(g_n·t/2)² per wall rest, ½m(|g|·t/2)² per
-  /// sleep and ½μ(|Δg|·t/2)² per pressed contact (μ the pair's reduced mass, m alone against a
-  /// sleeping ball).
+  /// J, what restEnergyChange may reach in size: Σ ½m(g_n·t/2)² per wall rest (t:
+  /// restBounceTime), m(|g|·t)² per sleep and ½μ(|Δg|·t/2)² per pressed contact (t:
+  /// ballRestTime; μ the pair's reduced mass, m alone against a sleeping ball).
   double restEnergyBound = 0.0;
   std::uint64_t sleeps = 0;  ///< balls fallen asleep since load
   std::uint64_t wakes = 0;   ///< sleeping balls woken by a hit, a force or a lost support
@@ -159,8 +159,9 @@ class EventDrivenWorld {
   /// per ball, sideBit() of each wall it rests on, and kAsleep
   std::vector<std::uint8_t> restingOn_;
   std::size_t restingCount_ = 0;  ///< balls resting on some wall or asleep
-  double restSpeed_ = 0.0;        ///< m/s, |g|·ballRestTime/2; 0: balls never sleep
-  double supportGap_ = 0.0;       ///< m, |g|·ballRestTime²/2: a gap to a support that still holds
+  double restSpeed_ = 0.0;   ///< m/s, |g|·ballRestTime/2, the least speed off a pressed contact
+  double sleepSpeed_ = 0.0;  ///< m/s, |g|·ballRestTime, the most a ball falling asleep has
+  double supportGap_ = 0.0;  ///< m, v_rest²/(2|g|): a gap to a support that still holds
   std::vector<std::uint32_t> woken_;   ///< balls woken by this event, to predict again
   std::vector<std::uint32_t> forced_;  ///< balls kicked by this step's forces
 

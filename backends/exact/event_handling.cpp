@@ -86,6 +86,8 @@ void EventDrivenWorld::bounce(std::uint32_t ball, Side wall) {
   if (push > 0.0 && 2.0 * approachSpeed <= push * limits_.restBounceTime) {
     counters_.wallImpulse += mass * approachSpeed;
     if (approachSpeed > 0.0) ++counters_.wallCollisions;
+    const double bound = 0.5 * push * limits_.restBounceTime;  // m/s, the most it drops
+    statistics_.restEnergyBound += 0.5 * mass * bound * bound;
     layToRest(ball, wall);
   } else if (approachSpeed > 0.0) {
     counters_.wallImpulse += 2.0 * mass * approachSpeed;
