@@ -9,12 +9,12 @@
 // v_rest = g·t/2 (a hop at v_rest returns within t) and v_sleep = 2·v_rest:
 //
 // - Sleep: a ball no faster than v_sleep after an event, held against gravity by the walls and
-//   sleeping balls it touches (within v_sleep²/2g, the height of a hop at v_sleep), stops where
-//   it is (laid onto a wall it presses on within that gap, as layToRest): velocity 0, no gravity
-//   felt, no events of its own. Held is the frictionless balance of one ball on fixed supports:
-//   "up" lies in the cone of the support normals (the floor; a pocket between two balls; a ball
-//   and a side wall); a ball on one ball's flank is not held and slides off. Energy: at most
-//   m·v_sleep² (½m|v|² and the lay onto a wall), booked.
+//   sleeping balls it touches (within v_sleep²/2g, the height of a hop at v_sleep, and at most
+//   r/10), stops where it is (laid onto a wall it presses on if rounding left it off by at most
+//   1e-9·r): velocity 0, no gravity felt, no events of its own. Held is the frictionless balance of
+//   one ball on fixed supports: "up" lies in the cone of the support normals (the floor; a pocket
+//   between two balls; a ball and a side wall); a ball on one ball's flank is not held and slides
+//   off. Energy: at most ½m·v_sleep² + m·|g|·1e-9·r (½m|v|² and the lay onto a wall), booked.
 // - A moving ball meeting a sleeping one: it falls asleep if it may; a hit faster than the
 //   pocket-escape speed √(2g(2 − √3)r) (wakeSpeed) wakes the sleeper (and, in turn, the
 //   sleepers it alone held) and the two collide as moving balls; a slower hit cannot rearrange
@@ -46,6 +46,16 @@
 #include "event_driven_world.h"
 
 namespace fooball::exact {
+
+namespace {
+
+/// A support counts within a hop at the sleep speed, but never beyond this many of the ball's
+/// radius: a long rest time under strong gravity must not hold balls in mid-air.
+constexpr double kSupportGapRadii = 0.1;
+/// Rounding's share of a radius: a sleeping ball this close to a wall is laid onto it.
+constexpr double kLayGapRadii = 1e-9;
+
+}  // namespace
 
 void EventDrivenWorld::updateRestScales() {
   const double gravity = length(world_.gravity);
@@ -131,7 +141,7 @@ bool EventDrivenWorld::held(std::uint32_t ball) const {
     const double inward = isLowerSide(wall) ? 1.0 : -1.0;
     const double gap =
         inward * (component(motion.position, axis) - contactCoordinate(wall, motion.radius));
-    if (gap > supportGap_) continue;
+    if (gap > std::min(supportGap_, kSupportGapRadii * motion.radius)) continue;
     Vec2 normal;
     componentRef(normal, axis) = inward;
     support(normal);
@@ -140,17 +150,19 @@ bool EventDrivenWorld::held(std::uint32_t ball) const {
     if (!asleep(other)) return;
     const Vec2 separation = motion.position - balls_[other].position;
     const double distance = length(separation);
-    if (distance - (motion.radius + balls_[other].radius) > supportGap_ || !(distance > 0.0))
+    if (distance - (motion.radius + balls_[other].radius) >
+            std::min(supportGap_, kSupportGapRadii * motion.radius) ||
+        !(distance > 0.0))
       return;
     support(separation / distance);
   });
   return straightUp || left + right < std::numbers::pi;
 }
 
-/// Puts the ball (advanced to now) to sleep where it is, if it is slow and held, laid onto the
-/// walls gravity presses it against (as layToRest: within supportGap_, so the potential energy
-/// changes by at most m·v_rest²/2 besides the kinetic ½m|v|² ≤ ½m·v_rest²). The caller predicts
-/// it again.
+/// Puts the ball (advanced to now) to sleep where it is, if it is slow and held. A wall that
+/// gravity presses it on and that rounding left it off (within kLayGapRadii of its radius) lays
+/// it onto the wall, as layToRest; further off it sleeps where it is, since moving it could press
+/// it into a neighbour. The caller predicts it again.
 bool EventDrivenWorld::trySleep(std::uint32_t ball) {
   if (!sleepActive() || asleep(ball)) return false;
   BallMotion& motion = balls_[ball];
@@ -158,7 +170,7 @@ bool EventDrivenWorld::trySleep(std::uint32_t ball) {
   if (speedSquared > sleepSpeed_ * sleepSpeed_ || !held(ball)) return false;
   const double mass = mass_[ball];
   statistics_.restEnergyChange -= 0.5 * mass * speedSquared;
-  statistics_.restEnergyBound += mass * sleepSpeed_ * sleepSpeed_;
+  const double beforeLay = statistics_.restEnergyChange;
   ++statistics_.sleeps;
   motion.velocity = {};
   for (int side = 0; side < 4; ++side) {
@@ -167,9 +179,13 @@ bool EventDrivenWorld::trySleep(std::uint32_t ball) {
     const double inward = isLowerSide(wall) ? 1.0 : -1.0;
     const double gap =
         inward * (component(motion.position, axis) - contactCoordinate(wall, motion.radius));
-    if (wallOn(wall) && gap <= supportGap_ && inward * component(world_.gravity, axis) < 0.0)
+    if (wallOn(wall) && gap <= kLayGapRadii * motion.radius &&
+        inward * component(world_.gravity, axis) < 0.0)
       layToRest(ball, wall);
   }
+  // ½m·v_sleep², and what the lay onto a wall changed (m·|g|·1e-9·r at most).
+  statistics_.restEnergyBound +=
+      0.5 * mass * sleepSpeed_ * sleepSpeed_ + std::abs(statistics_.restEnergyChange - beforeLay);
   ++motion.version;
   setRestBits(ball, static_cast<std::uint8_t>(restingOn_[ball] | kAsleep));
   return true;
@@ -223,7 +239,8 @@ void EventDrivenWorld::wake(std::uint32_t ball) {
       if (!asleep(other)) return;
       const double gap =
           length(balls_[other].position - woken.position) - (woken.radius + balls_[other].radius);
-      if (gap <= supportGap_ && !held(other)) rouse(other);
+      if (gap <= std::min(supportGap_, kSupportGapRadii * balls_[other].radius) && !held(other))
+        rouse(other);
     });
   }
 }
