@@ -159,11 +159,11 @@ constexpr BoundaryExpectation kExactBoundaries[] = {
     {.sweep = "packing", .maxError = kDoubleRounding, .passesEverywhere = true},
     // Scale, 1e-4 to 1e4: double with no absolute lengths, the same motion at every scale.
     {.sweep = "scale", .maxError = kDoubleRounding, .passesEverywhere = true},
-    // A finding: the pile is a Zeno sequence for an event-driven solver (ever shorter bounces
-    // between resting balls), so the solver cuts steps short at its event cap and advances the
-    // rest of the step without collisions; under g = 100 m/s² that leaves overlaps past 0.1 r.
-    // It gives way under strong gravity.
-    pileGivesWayBetween(10.0, 100.0),
+    // The pile is a Zeno sequence for an event-driven solver (ever shorter bounces between
+    // resting balls); the ball rest rule (ball_rest_time, default 0.01 s) lays it to sleep in its
+    // first events at every gravity, run without the map's event cap. Measured (quick grid, 1 to
+    // 1000 m/s²): energy error 1e-17 to 2e-16, overlap 5.6e-16 of a radius: rounding.
+    {.sweep = "pile", .maxError = kDoubleRounding, .passesEverywhere = true},
 };
 
 constexpr BoundaryExpectation kXpbdBoundaries[] = {

@@ -65,6 +65,12 @@ void printRunSummary(const RunSummary& summary, std::ostream& out) {
   table.addRow({"momentum change:", changeText(momentumChange, momentumScale, "N s")});
   table.addRow({"energy residual:", text::readableText(summary.end.energyResidual) + " J"});
   table.addRow({"energy error:", energyErrorText(summary.end)});
+  if (summary.end.restingBalls != 0 || summary.end.restEnergyChange != 0.0) {
+    // A method's resting rule is active: what it holds still, and the energy it booked.
+    table.addRow({"resting balls:", std::to_string(summary.end.restingBalls)});
+    table.addRow({"rest energy change:", text::readableText(summary.end.restEnergyChange) +
+                                             " J (booked, out of the residual)"});
+  }
   table.addRow({"ball collisions:", std::to_string(summary.end.ballCollisions)});
   table.addRow({"wall collisions:", std::to_string(summary.end.wallCollisions)});
   for (const Diagnostic& diagnostic : summary.diagnostics) {

@@ -21,6 +21,10 @@ struct alignas(64) BallMotion {
   double interactionTime = std::numeric_limits<double>::infinity();
 };
 
+/// Beside the walls' sideBit() in a ball's rest bits: asleep (ball_rest.cpp), held still by
+/// walls and sleeping balls, velocity 0 and no gravity felt.
+inline constexpr std::uint8_t kAsleep = 1u << 4;
+
 /// m/s², the gravity on a ball resting on the walls in `restingOn` (sideBit() per wall): the
 /// walls carry its normal components.
 inline Vec2 gravityOn(std::uint8_t restingOn, Vec2 gravity) {

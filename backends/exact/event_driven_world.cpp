@@ -22,6 +22,7 @@ constexpr std::size_t kKickedFractionForRebuild = 8;
 void EventDrivenWorld::load(const Scene& scene) {
   box_ = scene.box;
   world_ = scene.world;
+  updateRestScales();
   const std::size_t count = scene.balls.size();
   balls_.assign(count, BallMotion{});
   mass_.resize(count);
@@ -34,6 +35,8 @@ void EventDrivenWorld::load(const Scene& scene) {
   }
   restingOn_.assign(count, 0);
   restingCount_ = 0;
+  woken_.clear();
+  woken_.reserve(count);
   forced_.clear();
   forced_.reserve(count);
   counters_ = {};
@@ -42,8 +45,16 @@ void EventDrivenWorld::load(const Scene& scene) {
   now_ = 0.0;
 }
 
+void EventDrivenWorld::setLimits(const EventLimits& limits) {
+  if (limits.ballRestTime != limits_.ballRestTime)
+    calendarValid_ = false;  // wakes every ball: they sleep again by the new rule
+  limits_ = limits;
+  updateRestScales();
+}
+
 void EventDrivenWorld::setWorld(const WorldSettings& world) {
   world_ = world;
+  updateRestScales();
   calendarValid_ = false;
 }
 
@@ -89,6 +100,7 @@ void EventDrivenWorld::applyForces(double dt, std::span<const Vec2> forces) {
   }
   for (std::uint32_t ball : forced_)
     predict(ball);
+  predictWoken();
 }
 
 void EventDrivenWorld::rebuild() {
@@ -107,8 +119,9 @@ void EventDrivenWorld::rebuild() {
       cells_.insert(ball, balls_[ball].position);
   }
   schedule_.assign(count, BallSchedule{});
-  restingOn_.assign(count, 0);
+  restingOn_.assign(count, 0);  // every ball wakes; the rest rules lay it down again
   restingCount_ = 0;
+  woken_.clear();
   calendar_.reset(count);
   for (std::uint32_t ball = 0; ball < count; ++ball)
     predict(ball);

@@ -21,6 +21,12 @@ struct EventLimits {
   /// gravity's normal component from then on. Without it a ball lying on the floor within
   /// rounding bounces at an unbounded rate.
   double restBounceTime = 1e-6;
+  /// s. Balls resting on balls (ball_rest.cpp): a ball slower than |g|·t that walls and sleeping
+  /// balls hold against gravity falls asleep, and a pair feeling different gravity (one asleep
+  /// or on a wall) leaves a contact at |Δg|·t/2 at least, so its next contact is about t away.
+  /// 0: balls never sleep and contacts stay elastic.
+  double ballRestTime = kDefaultBallRestTime;
+  static constexpr double kDefaultBallRestTime = 1e-2;
   /// Average events per ball in one step (counted as for at least 500 balls) before the step is
   /// cut short and the rest of it moves without collisions; kNoEventCap (the default) never
   /// cuts a step short, so every step is exact. A cap bounds the work of a step that holds very
@@ -35,7 +41,15 @@ struct EventStatistics {
   std::uint64_t eventsThisStep = 0;
   std::uint64_t collisionsThisStep = 0;
   std::uint64_t cutShortSteps = 0;  ///< steps that hit the event cap or a zero-time loop
-  double restEnergyChange = 0.0;    ///< J, energy changed by laying balls to rest on walls
+  /// J, energy changed by the rest rules: laying balls to rest on walls, putting them to sleep
+  /// and the least speed a pressed pair leaves a contact with (ball_rest.cpp).
+  double restEnergyChange = 0.0;
+  /// J, what restEnergyChange may reach in size: Σ ½m(g_n·t/2)² per wall rest (t:
+  /// restBounceTime), m(|g|·t)² per sleep and ½μ(|Δg|·t/2)² per pressed contact (t:
+  /// ballRestTime; μ the pair's reduced mass, m alone against a sleeping ball).
+  double restEnergyBound = 0.0;
+  std::uint64_t sleeps = 0;  ///< balls fallen asleep since load
+  std::uint64_t wakes = 0;   ///< sleeping balls woken by a hit, a force or a lost support
 };
 
 /// Event-driven hard-disk dynamics with exact free flight (free_flight.h).
@@ -48,7 +62,7 @@ struct EventStatistics {
 /// the state read between steps is exact and times stay small.
 class EventDrivenWorld {
  public:
-  void setLimits(const EventLimits& limits) { limits_ = limits; }
+  void setLimits(const EventLimits& limits);
 
   /// Takes the scene (already validated) and zeroes counters and statistics.
   void load(const Scene& scene);
@@ -68,6 +82,7 @@ class EventDrivenWorld {
 
   const BackendCounters& counters() const { return counters_; }
   const EventStatistics& statistics() const { return statistics_; }
+  /// Balls resting now: on a wall or asleep.
   std::size_t restingBallCount() const { return restingCount_; }
 
  private:
@@ -103,12 +118,29 @@ class EventDrivenWorld {
   void layToRest(std::uint32_t ball, Side wall);
   void liftIfMoving(std::uint32_t ball);
 
+  // ball_rest.cpp: balls resting on balls.
+  bool asleep(std::uint32_t ball) const {
+    return restingCount_ != 0 && (restingOn_[ball] & kAsleep) != 0;
+  }
+  bool sleepActive() const { return restSpeed_ > 0.0 && cellsActive_; }
+  void updateRestScales();
+  void setRestBits(std::uint32_t ball, std::uint8_t bits);
+  double restKick(std::uint32_t first, std::uint32_t second) const;
+  double wakeSpeed(std::uint32_t sleeper) const;
+  void exchange(std::uint32_t first, std::uint32_t second);
+  bool held(std::uint32_t ball) const;
+  bool trySleep(std::uint32_t ball);
+  void meetSleeper(std::uint32_t mover, std::uint32_t sleeper);
+  void wake(std::uint32_t ball);
+  void predictWoken();
+
   /// No gravity and no drag: every ball flies in a straight line at constant speed, and the
   /// predictions take their closed forms directly (nobody rests on a wall without gravity).
   bool straightFlight() const { return world_.airResistance == 0.0 && world_.gravity == Vec2{}; }
   /// m/s², the gravity the ball feels (less what walls it rests on carry).
   Vec2 gravityOf(std::uint32_t ball) const {
-    return restingCount_ == 0 ? world_.gravity : gravityOn(restingOn_[ball], world_.gravity);
+    if (restingCount_ == 0) return world_.gravity;
+    return (restingOn_[ball] & kAsleep) != 0 ? Vec2{} : gravityOn(restingOn_[ball], world_.gravity);
   }
   bool restsAlong(std::uint32_t ball, int axis) const {
     return restingCount_ != 0 && (restingOn_[ball] & axisSideBits(axis)) != 0;
@@ -121,12 +153,17 @@ class EventDrivenWorld {
   WorldSettings world_;
   EventLimits limits_;
 
-  std::vector<BallMotion> balls_;        ///< in scene order
-  std::vector<double> mass_;             ///< kg, per ball
-  std::vector<BallSchedule> schedule_;   ///< per ball
-  std::vector<std::uint8_t> restingOn_;  ///< per ball, sideBit() of each wall it rests on
-  std::size_t restingCount_ = 0;         ///< balls resting on some wall
-  std::vector<std::uint32_t> forced_;    ///< balls kicked by this step's forces
+  std::vector<BallMotion> balls_;       ///< in scene order
+  std::vector<double> mass_;            ///< kg, per ball
+  std::vector<BallSchedule> schedule_;  ///< per ball
+  /// per ball, sideBit() of each wall it rests on, and kAsleep
+  std::vector<std::uint8_t> restingOn_;
+  std::size_t restingCount_ = 0;  ///< balls resting on some wall or asleep
+  double restSpeed_ = 0.0;   ///< m/s, |g|·ballRestTime/2, the least speed off a pressed contact
+  double sleepSpeed_ = 0.0;  ///< m/s, |g|·ballRestTime, the most a ball falling asleep has
+  double supportGap_ = 0.0;  ///< m, v_rest²/(2|g|): a gap to a support that still holds
+  std::vector<std::uint32_t> woken_;   ///< balls woken by this event, to predict again
+  std::vector<std::uint32_t> forced_;  ///< balls kicked by this step's forces
 
   EventCalendar calendar_;
   EventCells cells_;

@@ -54,28 +54,23 @@ void EventDrivenWorld::handle(std::uint32_t ball, const Event& interaction) {
 void EventDrivenWorld::collide(std::uint32_t first, std::uint32_t second) {
   advance(first, now_);
   advance(second, now_);
-  BallMotion& a = balls_[first];
-  BallMotion& b = balls_[second];
-  const Vec2 separation = b.position - a.position;
-  const double distance = std::sqrt(lengthSquared(separation));  // no overflow at box scales
-  if (distance > 0.0) {
-    const Vec2 normal = separation / distance;
-    const double approach = dot(b.velocity - a.velocity, normal);
-    if (approach < 0.0) {
-      // Δv_a = 2·m_b/(m_a + m_b)·u_n·n and the mirror image: each weight is its own quotient
-      // (never 1 − the other), so the light ball's change keeps full precision and the heavy
-      // one's is tiny but exact, at any mass ratio.
-      const double totalMass = mass_[first] + mass_[second];
-      a.velocity += (2.0 * approach * (mass_[second] / totalMass)) * normal;
-      b.velocity -= (2.0 * approach * (mass_[first] / totalMass)) * normal;
-      ++counters_.ballCollisions;
-      ++statistics_.collisionsThisStep;
+  if (asleep(first) || asleep(second)) {
+    if (asleep(first)) {
+      meetSleeper(second, first);
+    } else {
+      meetSleeper(first, second);
     }
+    return;
   }
-  ++a.version;
-  ++b.version;
+  exchange(first, second);
+  ++balls_[first].version;
+  ++balls_[second].version;
   liftIfMoving(first);
   liftIfMoving(second);
+  if (restSpeed_ > 0.0) {
+    trySleep(first);
+    trySleep(second);
+  }
   predict(first);
   predict(second);
 }
@@ -91,6 +86,8 @@ void EventDrivenWorld::bounce(std::uint32_t ball, Side wall) {
   if (push > 0.0 && 2.0 * approachSpeed <= push * limits_.restBounceTime) {
     counters_.wallImpulse += mass * approachSpeed;
     if (approachSpeed > 0.0) ++counters_.wallCollisions;
+    const double bound = 0.5 * push * limits_.restBounceTime;  // m/s, the most it drops
+    statistics_.restEnergyBound += 0.5 * mass * bound * bound;
     layToRest(ball, wall);
   } else if (approachSpeed > 0.0) {
     counters_.wallImpulse += 2.0 * mass * approachSpeed;
@@ -98,6 +95,7 @@ void EventDrivenWorld::bounce(std::uint32_t ball, Side wall) {
     normalVelocity = -normalVelocity;
   }
   ++balls_[ball].version;
+  trySleep(ball);
   predict(ball);
 }
 
@@ -116,14 +114,22 @@ void EventDrivenWorld::layToRest(std::uint32_t ball, Side wall) {
   restingOn_[ball] |= sideBit(wall);
 }
 
+/// After a collision or a force: a ball no longer rests on a wall along an axis it now moves
+/// along, and a sleeping ball that moves wakes (with the sleepers it alone held).
 void EventDrivenWorld::liftIfMoving(std::uint32_t ball) {
   if (restingCount_ == 0 || restingOn_[ball] == 0) return;
+  std::uint8_t restingOn = restingOn_[ball];
   for (int axis = 0; axis < 2; ++axis) {
-    if (component(balls_[ball].velocity, axis) != 0.0) {
-      restingOn_[ball] = static_cast<std::uint8_t>(restingOn_[ball] & ~axisSideBits(axis));
-    }
+    if (component(balls_[ball].velocity, axis) != 0.0)
+      restingOn = static_cast<std::uint8_t>(restingOn & ~axisSideBits(axis));
   }
-  if (restingOn_[ball] == 0) --restingCount_;
+  setRestBits(ball, restingOn);
+  if ((restingOn & kAsleep) == 0 || balls_[ball].velocity == Vec2{}) return;
+  if (calendarValid_) {
+    wake(ball);
+  } else {  // the rebuild to come wakes every ball
+    setRestBits(ball, static_cast<std::uint8_t>(restingOn & ~kAsleep));
+  }
 }
 
 }  // namespace fooball::exact

@@ -12,6 +12,13 @@ namespace fooball::exact {
 void EventDrivenWorld::predict(std::uint32_t ball) {
   advance(ball, now_);
   Event next;
+  if (asleep(ball)) {
+    // A sleeping ball holds no events: its contacts go to the moving balls around it.
+    schedule_[ball].crossing = {};
+    cells_.forEachNeighbour(ball, [&](std::uint32_t other) { checkPair(ball, other, next); });
+    setInteraction(ball, next);
+    return;
+  }
   for (int side = 0; side < 4; ++side) {
     const Side wall = static_cast<Side>(side);
     if (wallReachable(ball, wall)) keepEarlier(next, wallContact(ball, wall));
@@ -123,6 +130,7 @@ CellCrossing EventDrivenWorld::straightCellCrossing(std::uint32_t ball) const {
 /// ball's interaction event stays its earliest. The event it displaces there needs no removal:
 /// its own partner's version check, or a fresh prediction when it comes due, catches it.
 void EventDrivenWorld::checkPair(std::uint32_t ball, std::uint32_t other, Event& next) {
+  if (asleep(ball) && asleep(other)) return;  // two sleeping balls never meet
   if (straightFlight()) {
     checkStraightPair(ball, other, next);
   } else {
@@ -161,10 +169,29 @@ void EventDrivenWorld::checkCurvedPair(std::uint32_t ball, std::uint32_t other, 
     delay = timeForFlightParameter(
         drag, linearContactParameter(pair.separation, pair.relativeVelocity, pair.reach));
   } else {
-    const double horizon = std::max(next.time, partner.interactionTime) - now_;
+    // Each ball predicts again at its own next event, so the search need not look past the
+    // later of the two. Against a sleeping ball, which has no events, it need not look past
+    // the moving ball's next cell crossing either, if a fresh prediction is due there: a
+    // search along an open horizon costs up to kMaxSteps, and a ball in a sleeping pile has
+    // several sleeping neighbours it may never touch.
+    double end = std::max(next.time, partner.interactionTime);
+    double crossing = std::numeric_limits<double>::infinity();
+    if (asleep(other)) {
+      end = next.time;
+      crossing = schedule_[ball].crossing.time;
+    } else if (asleep(ball)) {
+      end = partner.interactionTime;
+      crossing = schedule_[other].crossing.time;
+    }
+    const bool recheckAtCrossing = crossing > now_ && crossing < end;
+    const double horizon = (recheckAtCrossing ? crossing : end) - now_;
     const PairContact contact = acceleratedPairContact(pair, drag, horizon);
-    if (contact.kind == PairContactKind::None) return;
-    if (contact.kind == PairContactKind::Recheck) kind = EventKind::Recheck;
+    if (contact.kind == PairContactKind::None && !recheckAtCrossing) return;
+    if (contact.kind != PairContactKind::Contact) kind = EventKind::Recheck;
+    if (contact.kind == PairContactKind::None) {
+      schedulePair(ball, other, next, crossing, kind);
+      return;
+    }
     delay = contact.time;
   }
   schedulePair(ball, other, next, now_ + delay, kind);
@@ -175,8 +202,8 @@ void EventDrivenWorld::checkCurvedPair(std::uint32_t ball, std::uint32_t other, 
 void EventDrivenWorld::schedulePair(std::uint32_t ball, std::uint32_t other, Event& next,
                                     double time, EventKind kind) {
   const BallMotion& partner = balls_[other];
-  if (time < next.time) next = {time, partner.version, other, kind};
-  if (time < partner.interactionTime)
+  if (time < next.time && !asleep(ball)) next = {time, partner.version, other, kind};
+  if (time < partner.interactionTime && !asleep(other))
     setInteraction(other, {time, balls_[ball].version, ball, kind});
 }
 

@@ -32,6 +32,8 @@ class ExactBackend final : public Backend {
   BackendCounters counters() const override {
     BackendCounters counters = world_.counters();
     counters.cutShortSteps = world_.statistics().cutShortSteps;
+    counters.restEnergyChange = world_.statistics().restEnergyChange;
+    counters.restingBalls = world_.restingBallCount();
     return counters;
   }
 
@@ -41,8 +43,10 @@ class ExactBackend final : public Backend {
         {"events", static_cast<double>(statistics.events)},
         {"events_this_step", static_cast<double>(statistics.eventsThisStep)},
         {"collisions_this_step", static_cast<double>(statistics.collisionsThisStep)},
-        {"resting_balls", static_cast<double>(world_.restingBallCount())},
         {"rest_energy_change", statistics.restEnergyChange},
+        {"rest_energy_bound", statistics.restEnergyBound},
+        {"sleeps", static_cast<double>(statistics.sleeps)},
+        {"wakes", static_cast<double>(statistics.wakes)},
     };
   }
 

@@ -14,9 +14,13 @@ namespace fooball {
 namespace {
 
 BackendCounters operator+(const BackendCounters& a, const BackendCounters& b) {
-  return {a.ballCollisions + b.ballCollisions, a.wallCollisions + b.wallCollisions,
-          a.wallImpulse + b.wallImpulse, a.dragLoss + b.dragLoss,
-          a.cutShortSteps + b.cutShortSteps};
+  return {a.ballCollisions + b.ballCollisions,
+          a.wallCollisions + b.wallCollisions,
+          a.wallImpulse + b.wallImpulse,
+          a.dragLoss + b.dragLoss,
+          a.cutShortSteps + b.cutShortSteps,
+          a.restEnergyChange + b.restEnergyChange,
+          b.restingBalls};
 }
 
 }  // namespace
@@ -295,8 +299,10 @@ Metrics Simulation::metrics(GeometryChecks geometry) const {
   }
   metrics.externalWork = externalWork_;
   metrics.dragLoss = counts.dragLoss;
-  metrics.energyResidual =
-      metrics.sums.totalEnergy() - initialEnergy_ - externalWork_ + counts.dragLoss;
+  metrics.restEnergyChange = counts.restEnergyChange;
+  metrics.restingBalls = counts.restingBalls;
+  metrics.energyResidual = metrics.sums.totalEnergy() - initialEnergy_ - externalWork_ +
+                           counts.dragLoss - counts.restEnergyChange;
   metrics.initialEnergy = initialEnergy_;
   return metrics;
 }

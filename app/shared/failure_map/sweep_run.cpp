@@ -16,9 +16,10 @@ double solverStep(const Backend& backend, double dt) {
   return substeps != nullptr ? dt / backend.options().value(substeps->name) : dt;
 }
 
-RunRecord runScene(const Scene& scene, std::string_view backend, double seconds, double dt) {
+RunRecord runScene(const Scene& scene, std::string_view backend, double seconds, double dt,
+                   EventCap cap) {
   std::unique_ptr<Backend> stepper = createBackend(backend);
-  stepper->capEventsToFinish();  // every point of a map must end, piles under gravity too
+  if (cap == EventCap::Finishing) stepper->capEventsToFinish();  // every point of a map must end
   Simulation simulation(scene, std::move(stepper));
   simulation.setDt(dt);
   RunRecord record;

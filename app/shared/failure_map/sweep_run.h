@@ -26,10 +26,14 @@ struct RunRecord {
   std::vector<Vec2> velocities;  ///< m/s, at the end
 };
 
+/// Whether a sweep's runs cap a backend's events per step (Backend::capEventsToFinish) so that
+/// every point ends; a sweep whose scenes end at the backends' defaults runs them uncapped.
+enum class EventCap { Finishing, Default };
+
 /// Runs `scene` (valid) on a fresh `backend` at its default options for `seconds` (whole steps
 /// of `dt`, at least one).
 RunRecord runScene(const Scene& scene, std::string_view backend, double seconds,
-                   double dt = kFrameDt);
+                   double dt = kFrameDt, EventCap cap = EventCap::Finishing);
 
 /// The i-th of a fixed, well-spread sequence of directions (golden-angle steps), as a unit
 /// vector: reproducible "random" velocities without a random generator.

@@ -24,6 +24,13 @@ struct BackendCounters {
   /// loop of events at one instant: the rest of each moved without collisions, so the counts
   /// and the physics of those steps are incomplete.
   std::uint64_t cutShortSteps = 0;
+  /// J, energy a method's resting rules changed by design, booked as it happened (the exact
+  /// solver laying balls to rest on walls and putting balls to sleep on balls, within the bound
+  /// its options state); the energy budget takes it out, as it does drag.
+  double restEnergyChange = 0.0;
+  /// Balls resting now (the exact solver: on a wall or asleep). A state, not a sum: after a
+  /// backend switch it is the current backend's.
+  std::uint64_t restingBalls = 0;
 };
 
 /// A backend-specific reading reported beside the counters, e.g. Box2D's translation-cap hits

@@ -42,13 +42,15 @@ struct Metrics {
   StateSums sums;
   std::uint64_t ballCollisions = 0;
   std::uint64_t wallCollisions = 0;
-  double wallImpulse = 0.0;  ///< N·s
-  double maxOverlap = 0.0;   ///< fraction of the smaller radius; 0 with GeometryChecks::Skip
-  std::size_t escaped = 0;   ///< 0 with GeometryChecks::Skip
-  /// The energy budget (J): E(t) − E(0) − work by tools and edits + energy taken by drag.
-  /// What is left is the method's own error.
+  double wallImpulse = 0.0;        ///< N·s
+  double maxOverlap = 0.0;         ///< fraction of the smaller radius; 0 with GeometryChecks::Skip
+  std::size_t escaped = 0;         ///< 0 with GeometryChecks::Skip
+  std::uint64_t restingBalls = 0;  ///< BackendCounters::restingBalls, now
+  /// The energy budget (J): E(t) − E(0) − work by tools and edits + energy taken by drag −
+  /// energy changed by a resting rule. What is left is the method's own error.
   double externalWork = 0.0;
   double dragLoss = 0.0;
+  double restEnergyChange = 0.0;  ///< J, BackendCounters::restEnergyChange
   double energyResidual = 0.0;
   /// J, E(0): the run's total energy where its budget began (load, restart), which the
   /// residual is measured from and relativeEnergyError divides by.
