@@ -6,6 +6,7 @@
 
 #include "axis.h"
 #include "ball_motion.h"
+#include "common/wall_touches.h"
 #include "event.h"
 #include "event_calendar.h"
 #include "event_cells.h"
@@ -114,6 +115,18 @@ class EventDrivenWorld {
     return restingCount_ != 0 && (restingOn_[ball] & axisSideBits(axis)) != 0;
   }
   bool wallOn(Side side) const;
+  /// Forgets the walls `ball` has left, seen where it is now: at each of its events and at the
+  /// end of each step (many bounces can fit in one step).
+  void releaseWalls(std::uint32_t ball) {
+    if (touches_[ball] != 0) {
+      touches_[ball] =
+          common::stillTouching(touches_[ball], balls_[ball].position, balls_[ball].radius, box_);
+    }
+  }
+  /// `wall` turned `ball` back: 1 when that begins a collision (common/wall_touches.h).
+  std::uint64_t touchWall(std::uint32_t ball, Side wall) {
+    return common::touchWall(touches_[ball], static_cast<common::WallBit>(sideBit(wall)));
+  }
   /// m, the centre coordinate at which a ball of `radius` touches `wall`.
   double contactCoordinate(Side wall, double radius) const;
 
@@ -125,8 +138,10 @@ class EventDrivenWorld {
   std::vector<double> mass_;             ///< kg, per ball
   std::vector<BallSchedule> schedule_;   ///< per ball
   std::vector<std::uint8_t> restingOn_;  ///< per ball, sideBit() of each wall it rests on
-  std::size_t restingCount_ = 0;         ///< balls resting on some wall
-  std::vector<std::uint32_t> forced_;    ///< balls kicked by this step's forces
+  /// Per ball, the walls it touches (common/wall_touches.h; sideBit() is its WallBit).
+  std::vector<common::WallTouches> touches_;
+  std::size_t restingCount_ = 0;       ///< balls resting on some wall
+  std::vector<std::uint32_t> forced_;  ///< balls kicked by this step's forces
 
   EventCalendar calendar_;
   EventCells cells_;

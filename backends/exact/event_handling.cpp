@@ -54,6 +54,8 @@ void EventDrivenWorld::handle(std::uint32_t ball, const Event& interaction) {
 void EventDrivenWorld::collide(std::uint32_t first, std::uint32_t second) {
   advance(first, now_);
   advance(second, now_);
+  releaseWalls(first);
+  releaseWalls(second);
   BallMotion& a = balls_[first];
   BallMotion& b = balls_[second];
   const Vec2 separation = b.position - a.position;
@@ -82,6 +84,7 @@ void EventDrivenWorld::collide(std::uint32_t first, std::uint32_t second) {
 
 void EventDrivenWorld::bounce(std::uint32_t ball, Side wall) {
   advance(ball, now_);
+  releaseWalls(ball);
   const int axis = axisOf(wall);
   const double inward = isLowerSide(wall) ? 1.0 : -1.0;
   double& normalVelocity = componentRef(balls_[ball].velocity, axis);
@@ -90,11 +93,11 @@ void EventDrivenWorld::bounce(std::uint32_t ball, Side wall) {
   const double mass = mass_[ball];
   if (push > 0.0 && 2.0 * approachSpeed <= push * limits_.restBounceTime) {
     counters_.wallImpulse += mass * approachSpeed;
-    if (approachSpeed > 0.0) ++counters_.wallCollisions;
+    if (approachSpeed > 0.0) counters_.wallCollisions += touchWall(ball, wall);
     layToRest(ball, wall);
   } else if (approachSpeed > 0.0) {
     counters_.wallImpulse += 2.0 * mass * approachSpeed;
-    ++counters_.wallCollisions;
+    counters_.wallCollisions += touchWall(ball, wall);
     normalVelocity = -normalVelocity;
   }
   ++balls_[ball].version;
