@@ -1,7 +1,5 @@
 #include "wall_containment.h"
 
-#include <utility>
-
 #include "plane_vectors.h"
 
 namespace fooball::bullet_detail {
@@ -18,12 +16,9 @@ void WallContainment::bringBack(btRigidBody& ball, double mass, common::WallTouc
   ball.setWorldTransform(transform);
   ball.setLinearVelocity(toBullet(v));
   ++ballsBroughtBack_;
-  // Brought back inside, the ball lies in the half of the box next to the wall it crossed.
-  const common::WallBit xWall = p.x < 0.5 * box_.width ? common::kLeftWall : common::kRightWall;
-  const common::WallBit yWall = p.y < 0.5 * box_.height ? common::kBottomWall : common::kTopWall;
-  for (const auto& [axis, wall] : {std::pair{brought.x, xWall}, std::pair{brought.y, yWall}}) {
+  for (const common::WallMirror::AxisReturn& axis : {brought.x, brought.y}) {
     impulse_ += mass * axis.impulse;
-    if (axis.leaving) wallCollisions_ += common::touchWall(touches, wall);
+    if (axis.leaving) wallCollisions_ += common::touchWall(touches, axis.wall);
   }
 }
 

@@ -1,7 +1,5 @@
 #include "wall_containment.h"
 
-#include <utility>
-
 namespace fooball::chipmunk_detail {
 
 WallContainment::WallContainment(const Box& box, const Walls& walls, Vec2 gravity, double thickness)
@@ -18,13 +16,10 @@ void WallContainment::bringBack(cpBody* ball, double radius, double mass,
   cpBodySetVelocity(ball, cpv(v.x, v.y));
   ++ballsBroughtBack_;
   const double unseen = radius + 2.0 * thickness_;  // m
-  // Brought back inside, the ball lies in the half of the box next to the wall it crossed.
-  const common::WallBit xWall = p.x < 0.5 * box_.width ? common::kLeftWall : common::kRightWall;
-  const common::WallBit yWall = p.y < 0.5 * box_.height ? common::kBottomWall : common::kTopWall;
-  for (const auto& [axis, wall] : {std::pair{brought.x, xWall}, std::pair{brought.y, yWall}}) {
+  for (const common::WallMirror::AxisReturn& axis : {brought.x, brought.y}) {
     if (!axis.brought) continue;
     impulse_ += mass * axis.impulse;
-    if (axis.depth > unseen) wallCollisions_ += common::touchWall(touches, wall);
+    if (axis.depth > unseen) wallCollisions_ += common::touchWall(touches, axis.wall);
   }
 }
 
