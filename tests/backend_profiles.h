@@ -40,6 +40,25 @@ struct ConformanceTolerances {
   double position = 1e-12;
 };
 
+/// How closely a backend's wall count follows the bounces, in tests/wall_count_test.cpp. The
+/// defaults hold for a method that turns a ball back in one step (the rule of
+/// backends/common/wall_touches.h counts the rest).
+struct WallCountBounds {
+  /// The options the suite runs it with, a run spec's KEY=VALUE list ("": its defaults). An
+  /// engine whose defaults move a resting pile or a gas's speeds (not its counting) is counted
+  /// with the knob that fixes that, as in consistencyOptions.
+  std::string_view options;
+  /// New wall collisions per second in a pile of 320 balls at rest (88 of them against a wall),
+  /// after its first second. Default: none, with room for one ball in a second whose contact
+  /// jitters past the release distance.
+  double restingPilePerSecond = 1.0;
+  /// |counted − bounces| relative to the bounces, for the counted bounces of a 300-ball gas
+  /// without collisions over 30 s (~1,600 bounces) against the paths' bounces and against the
+  /// wall impulse / (2 m v_n). Default: the bounces under way at the end (a ball crosses in the
+  /// last substep about once in the run) and rounding: 0.5%.
+  double gasRelative = 0.005;
+};
+
 /// Every point whose parameter is at or below `atOrBelow` has an error above `error`.
 struct ErrorFloor {
   double atOrBelow = 0.0;
@@ -75,6 +94,7 @@ struct EnergyFinding {
 struct BackendProfile {
   std::string_view name;              ///< registry name (backends/registry.cpp)
   ConformanceTolerances conformance;  ///< tests/conformance_test.cpp
+  WallCountBounds wallCount;          ///< tests/wall_count_test.cpp
   /// tests/consistency/short_time_test.cpp; methodError() fills in the solver step.
   MethodError methodError;
   /// tests/consistency: the options the backend runs with there, a run spec's KEY=VALUE list
@@ -118,5 +138,9 @@ std::span<const BackendProfile> backendProfiles();
 /// its message) when there is none: "backend 'X' has no row in tests/backend_profiles.cpp: state
 /// its tolerances there".
 const BackendProfile& profileFor(std::string_view name);
+
+/// A new backend registered as `name` with `options`, a run spec's KEY=VALUE list ("": its
+/// defaults), as a row gives them to a suite.
+std::unique_ptr<Backend> createWithOptions(std::string_view name, std::string_view options);
 
 }  // namespace fooball::testing

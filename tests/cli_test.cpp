@@ -329,6 +329,19 @@ TEST_F(CliTest, NegativeRadiusSceneExitsTwoNamingFileAndPlace) {
               AllOf(HasSubstr("negative_radius.json"), HasSubstr("balls[0].radius")));
 }
 
+TEST_F(CliTest, MoreBallsThanTheLimitExitTwoNamingIt) {
+  const std::string limit = std::to_string(fooball::kMaxBalls);
+  const std::string count = std::to_string(fooball::kMaxBalls + 1);
+  const fs::path scene =
+      writeFile("too_many.json",
+                R"({"format": "fooball-scene", "version": 1, "box": {"width": 16, "height": 9},
+    "random_balls": {"count": )" +
+                    count + R"(, "radius": [0.001, 0.001], "speed": [0, 1],
+    "density": 1, "seed": 1}})");
+  EXPECT_THAT(expectBadInput({"run", "--scene", scene.string(), "--duration", "0"}),
+              AllOf(HasSubstr("random_balls.count"), HasSubstr("at most " + limit)));
+}
+
 TEST_F(CliTest, MissingSceneFileExitsTwoNamingIt) {
   EXPECT_THAT(expectBadInput({"run", "--scene", pathOf("absent.json").string()}),
               HasSubstr("absent.json"));

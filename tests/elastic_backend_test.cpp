@@ -187,7 +187,9 @@ TEST_P(ElasticAtTimeStep, BouncesShorterThanAStepFollowTheClosedForm) {
   ElasticRun run(scene);
   run.advance(1.0, dt);
   const auto [y, vy] = testing::bounceOnFloor(height, 0.0, g, floor, simulatedTime(1.0, dt));
-  EXPECT_GT(run.backend->counters().wallCollisions, 100u);
+  // ~120 bounces, none rising past a tenth of its radius: one contact with the floor, one wall
+  // collision (backends/common/wall_touches.h).
+  EXPECT_EQ(run.backend->counters().wallCollisions, 1u);
   // Exact but for rounding, which shifts the bounce times: a drift of ~3e-13 s over ~120
   // bounces (measured at 1 kHz) moves the height by ~1e-13 m and the speed by |g|·3e-13 s =
   // 4e-11 m/s; the bounds leave a margin of 8 and 25.
@@ -220,7 +222,9 @@ TEST_P(ElasticAtTimeStep, BouncingInACornerUnderSlantedStrongGravityKeepsTheEner
   ElasticRun run(scene);
   const std::vector<double> start = energies(run);
   run.advance(20.0, dt);
-  EXPECT_GT(run.backend->counters().wallCollisions, 5000u);
+  // The three moving balls' bounces (the one in the corner stays within a tenth of its radius
+  // of both walls: one contact with each, common/wall_touches.h); measured 1'162.
+  EXPECT_GT(run.backend->counters().wallCollisions, 1000u);
   const std::vector<double> end = energies(run);
   for (std::size_t i = 0; i < scene.balls.size(); ++i) {
     // Rounding: ~1e-16 of m·|g|·(w + h), the scale of the terms of a ball's energy in this box,

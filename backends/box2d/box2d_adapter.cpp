@@ -41,11 +41,12 @@ void Box2dAdapter::load(const Scene& scene) {
   for (const BallDef& ball : scene.balls) {
     balls_.push_back(
         createBallBody(*world_, ball, worldSettings_.ballCollisions, settings_.bullets));
+    balls_.back()->GetUserData().pointer = balls_.size() - 1;  // the contact counter's
     masses_.push_back(ball.mass);
     totalMass_ += ball.mass;
   }
 
-  contacts_.reset();
+  contacts_.reset(balls_.size());
   dampedStep_ = 0.0f;
   linearDamping_ = 0.0f;
   dragLoss_ = 0.0;
@@ -75,6 +76,7 @@ void Box2dAdapter::setBall(std::size_t index, const BallDef& ball) {
   body.SetLinearVelocity(toBox2d(ball.velocity));
   setBallShape(body, ball.radius, ball.mass);
   masses_[index] = ball.mass;
+  contacts_.forgetBall(index);
   totalMass_ = 0.0;
   for (const double mass : masses_)
     totalMass_ += mass;

@@ -39,6 +39,7 @@ void Box2dAdapter::step(double dt, std::span<const Vec2> forces) {
     if (worldSettings_.airResistance > 0.0) dragLoss_ += prepareDrag(box2dStep, velocities);
 
     world_->Step(box2dStep, settings_.velocityIterations, settings_.positionIterations);
+    contacts_.releaseWalls(balls_, box_);
     velocities =
         scanVelocities(balls_, masses_, capSpeed(static_cast<double>(box2dStep)), sums, &walls);
     translationCapHits_ += velocities.ballsAtCap;

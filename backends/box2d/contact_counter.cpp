@@ -15,27 +15,30 @@ bool touchesWall(const b2Contact& contact) {
          contact.GetFixtureB()->GetBody()->GetType() == b2_staticBody;
 }
 
-/// Whether the ball of the ball–wall contact `contact` already touches another piece of the same
-/// wall: sliding over the seam between two pieces, or landing on one, is not a new collision.
-bool ballAlreadyTouchesWall(const b2Contact& contact) {
-  const b2Body* first = contact.GetFixtureA()->GetBody();
-  const b2Body* second = contact.GetFixtureB()->GetBody();
-  const b2Body* wall = first->GetType() == b2_staticBody ? first : second;
-  const b2Body* ball = wall == first ? second : first;
-  for (const b2ContactEdge* edge = ball->GetContactList(); edge != nullptr; edge = edge->next) {
-    if (edge->other == wall && edge->contact != &contact && edge->contact->IsTouching())
-      return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 void ContactCounter::BeginContact(b2Contact* contact) {
-  if (touchesWall(*contact)) {
-    if (!ballAlreadyTouchesWall(*contact)) ++wallCollisions;
-  } else {
+  if (!touchesWall(*contact)) {
     ++ballCollisions;
+    return;
+  }
+  b2Body* first = contact->GetFixtureA()->GetBody();  // GetUserData() is not const in 2.4.1
+  b2Body* second = contact->GetFixtureB()->GetBody();
+  const bool firstIsWall = first->GetType() == b2_staticBody;
+  b2Body* wall = firstIsWall ? first : second;
+  b2Body* ball = firstIsWall ? second : first;
+  const auto bit = static_cast<common::WallBit>(wall->GetUserData().pointer);
+  wallCollisions += common::touchWall(touches_[ball->GetUserData().pointer], bit);
+}
+
+void ContactCounter::releaseWalls(std::span<b2Body* const> balls, const Box& box) {
+  for (std::size_t i = 0; i < touches_.size(); ++i) {
+    if (touches_[i] == 0) continue;
+    const b2Body& ball = *balls[i];
+    const b2Vec2& p = ball.GetPosition();
+    const double radius = static_cast<double>(ball.GetFixtureList()->GetShape()->m_radius);
+    touches_[i] = common::stillTouching(
+        touches_[i], {static_cast<double>(p.x), static_cast<double>(p.y)}, radius, box);
   }
 }
 

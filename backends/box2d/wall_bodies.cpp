@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "collision_filter.h"
+#include "common/wall_touches.h"
 #include "elastic_fixture.h"
 
 namespace fooball::box2d_detail {
@@ -89,8 +90,15 @@ b2PolygonShape slabPiece(const SideSlab& whole, int index, int count) {
                       : slab(across0, end(index), across1, end(index + 1));
 }
 
+common::WallBit wallBit(Side side) {
+  constexpr common::WallBit bits[] = {common::kLeftWall, common::kRightWall, common::kBottomWall,
+                                      common::kTopWall};
+  return bits[side];
+}
+
 b2Body* createWall(b2World& world, Side side, const Box& box) {
-  const b2BodyDef def;  // static, at the origin: the slab's vertices are world coordinates
+  b2BodyDef def;  // static, at the origin: the slab's vertices are world coordinates
+  def.userData.pointer = wallBit(side);  // the contact counter's: which wall
   b2Body* body = world.CreateBody(&def);
   const SideSlab whole = sideSlab(side, box);
   const int pieces = static_cast<int>(std::ceil((whole.high - whole.low) / kPieceLength));

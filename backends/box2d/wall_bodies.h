@@ -10,7 +10,8 @@
 namespace fooball::box2d_detail {
 
 /// The walls that are on, as static Box2D bodies: one per side, a thick slab lying outside the box
-/// cut into square pieces (one fixture each).
+/// cut into square pieces (one fixture each). Each wall's body holds its common::WallBit in its
+/// user data (contact_counter.h).
 /// Walls that are off do not exist, so Box2D does no work for them.
 class WallBodies {
  public:

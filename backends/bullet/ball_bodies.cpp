@@ -14,7 +14,7 @@ btVector3 inertiaOf(const btSphereShape& shape, float mass) {
 
 }  // namespace
 
-BallBody createBall(const BallDef& ball, const BallSetup& setup) {
+BallBody createBall(const BallDef& ball, std::size_t index, const BallSetup& setup) {
   BallBody created;
   created.shape = std::make_unique<btSphereShape>(static_cast<float>(ball.radius));
   const auto mass = static_cast<float>(ball.mass);
@@ -33,7 +33,7 @@ BallBody createBall(const BallDef& ball, const BallSetup& setup) {
   body.setContactProcessingThreshold(setup.contactProcessingThreshold);
   body.setLinearVelocity(
       btVector3(static_cast<float>(ball.velocity.x), static_cast<float>(ball.velocity.y), 0.0f));
-  tagBall(body, setup.counts);
+  tagBall(body, setup.counts, index);
   return created;
 }
 

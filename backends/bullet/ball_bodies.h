@@ -34,7 +34,8 @@ struct BallSetup {
 /// - never deactivated (DISABLE_DEACTIVATION): a sleeping ball would ignore drag and tools, and
 ///   Bullet puts bodies slower than 0.8 m/s to sleep after 2 s by default.
 /// Continuous collision stays off, Bullet's default (wall_containment.h says why).
-BallBody createBall(const BallDef& ball, const BallSetup& setup);
+/// `index`: its scene index (contact_counter.h).
+BallBody createBall(const BallDef& ball, std::size_t index, const BallSetup& setup);
 
 /// Gives the ball radius `radius` (m) and mass `mass` (kg), keeping its body in the world;
 /// `gravity` (m/s²) is the world's, which Bullet stores per body as a force (mass times it).

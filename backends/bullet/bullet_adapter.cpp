@@ -18,8 +18,8 @@ void BulletAdapter::load(const Scene& scene) {
   worldSettings_ = scene.world;
   linearDamping_ = bulletLinearDamping(worldSettings_.airResistance);
   worldsBuilt_ = 0;
-  build(scene.balls);
   contacts_ = {};
+  build(scene.balls);
   dragLoss_ = 0.0;
   bulletSteps_ = 0;
   ballsBroughtBack_ = 0;
@@ -39,10 +39,11 @@ void BulletAdapter::build(std::span<const BallDef> balls) {
   masses_.resize(balls.size());
   balls_.reserve(balls.size());
   const BallSetup setup{linearDamping_, threshold, &contacts_};
+  contacts_.touches.assign(balls.size(), 0);  // a new world: contacts begin anew
   const int mask = ballMask(worldSettings_.ballCollisions);
   for (std::size_t i = 0; i < balls.size(); ++i) {
     masses_[i] = balls[i].mass;
-    balls_.push_back(createBall(balls[i], setup));
+    balls_.push_back(createBall(balls[i], i, setup));
     world.addRigidBody(balls_.back().body.get(), kBallGroup, mask);
   }
   ++worldsBuilt_;
@@ -97,6 +98,7 @@ void BulletAdapter::setBall(std::size_t index, const BallDef& ball) {
   edited.body->setInterpolationWorldTransform(transform);
   edited.body->setLinearVelocity(toBullet(ball.velocity));
   masses_[index] = ball.mass;
+  contacts_.touches[index] = 0;  // an edited ball begins its contacts anew
   world.updateSingleAabb(edited.body.get());
   // Its contact points were found for where it was, with its old radius: dropped, so the next
   // step finds its contacts afresh.

@@ -26,8 +26,10 @@ void BulletAdapter::step(double dt, std::span<const Vec2> forces) {
     world.stepSimulation(bulletStep, 0);
     addWallImpulse(*world.getDispatcher(), contacts_);
     if (anyWall) {
-      for (std::size_t i = 0; i < balls_.size(); ++i)
-        walls.contain(*balls_[i].body, masses_[i]);
+      for (std::size_t i = 0; i < balls_.size(); ++i) {
+        walls.contain(*balls_[i].body, masses_[i], balls_[i].shape->getRadius(),
+                      contacts_.touches[i]);
+      }
     }
     ++stepsTaken;
   }

@@ -20,7 +20,10 @@ void countStartedContact(btPersistentManifold* const& manifold) {
   auto* counts = static_cast<ContactCounts*>(first.getUserPointer());
   if (counts == nullptr) return;  // not one of ours
   if (isWall(first) || isWall(second)) {
-    ++counts->wallCollisions;
+    const btCollisionObject& wall = isWall(first) ? first : second;
+    const btCollisionObject& ball = isWall(first) ? second : first;
+    const auto bit = static_cast<common::WallBit>(wall.getUserIndex2());
+    counts->wallCollisions += common::touchWall(counts->touches[ball.getUserIndex2()], bit);
   } else {
     ++counts->ballCollisions;
   }
@@ -38,13 +41,15 @@ void installContactCounter() {
   (void)installed;
 }
 
-void tagBall(btCollisionObject& object, ContactCounts* counts) {
+void tagBall(btCollisionObject& object, ContactCounts* counts, std::size_t index) {
   object.setUserIndex(kBallKind);
+  object.setUserIndex2(static_cast<int>(index));
   object.setUserPointer(counts);
 }
 
-void tagWall(btCollisionObject& object, ContactCounts* counts) {
+void tagWall(btCollisionObject& object, ContactCounts* counts, common::WallBit wall) {
   object.setUserIndex(kWallKind);
+  object.setUserIndex2(wall);
   object.setUserPointer(counts);
 }
 

@@ -5,9 +5,9 @@
 namespace fooball::bullet_detail {
 
 WallContainment::WallContainment(const Box& box, const Walls& walls, Vec2 gravity)
-    : mirror_(box, walls, gravity) {}
+    : box_(box), mirror_(box, walls, gravity) {}
 
-void WallContainment::bringBack(btRigidBody& ball, double mass) {
+void WallContainment::bringBack(btRigidBody& ball, double mass, common::WallTouches& touches) {
   Vec2 p = fromBullet(ball.getWorldTransform().getOrigin());
   Vec2 v = fromBullet(ball.getLinearVelocity());
   const common::WallMirror::Return brought = mirror_.bringBack(p, v);
@@ -18,7 +18,7 @@ void WallContainment::bringBack(btRigidBody& ball, double mass) {
   ++ballsBroughtBack_;
   for (const common::WallMirror::AxisReturn& axis : {brought.x, brought.y}) {
     impulse_ += mass * axis.impulse;
-    if (axis.leaving) ++wallCollisions_;
+    if (axis.leaving) wallCollisions_ += common::touchWall(touches, axis.wall);
   }
 }
 

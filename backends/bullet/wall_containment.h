@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "common/wall_mirror.h"
+#include "common/wall_touches.h"
 #include "fooball/scene.h"
 
 namespace fooball::bullet_detail {
@@ -25,17 +26,22 @@ namespace fooball::bullet_detail {
 /// default. The returns are counted (diagnostic `balls_brought_back`).
 ///
 /// The mirror and its energy are common::WallMirror's. A ball whose velocity still pointed out of
-/// the box bounced here, not in Bullet: that bounce is counted with its impulse.
+/// the box bounced here, not in Bullet: that bounce is counted with its impulse, as every wall
+/// collision only when the ball did not touch that wall already (common/wall_touches.h). The same
+/// pass forgets the walls each ball has left.
 class WallContainment {
  public:
   /// `gravity` (m/s²) as the step flies the balls.
   WallContainment(const Box& box, const Walls& walls, Vec2 gravity);
 
-  /// Brings `ball` (mass in kg) back if its centre is beyond a wall.
-  void contain(btRigidBody& ball, double mass) {
+  /// Brings `ball` (mass in kg, radius in m) back if its centre is beyond a wall; `touches` are
+  /// the walls it touches.
+  void contain(btRigidBody& ball, double mass, double radius, common::WallTouches& touches) {
     const btVector3& p = ball.getWorldTransform().getOrigin();
-    if (mirror_.inside(static_cast<double>(p.x()), static_cast<double>(p.y()))) return;
-    bringBack(ball, mass);
+    const Vec2 centre{static_cast<double>(p.x()), static_cast<double>(p.y())};
+    if (touches != 0) touches = common::stillTouching(touches, centre, radius, box_);
+    if (mirror_.inside(centre.x, centre.y)) return;
+    bringBack(ball, mass, touches);
   }
 
   std::uint64_t ballsBroughtBack() const { return ballsBroughtBack_; }
@@ -43,8 +49,9 @@ class WallContainment {
   double impulse() const { return impulse_; }  ///< N·s, Σ|Δp| of the velocities turned back
 
  private:
-  void bringBack(btRigidBody& ball, double mass);
+  void bringBack(btRigidBody& ball, double mass, common::WallTouches& touches);
 
+  Box box_;
   common::WallMirror mirror_;
   std::uint64_t ballsBroughtBack_ = 0;
   std::uint64_t wallCollisions_ = 0;

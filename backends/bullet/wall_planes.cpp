@@ -39,7 +39,9 @@ void WallPlanes::sync(btDiscreteDynamicsWorld& world, const Box& box, const Wall
       wall.body = std::make_unique<btRigidBody>(info);
       makeElastic(*wall.body);
       wall.body->setContactProcessingThreshold(contactProcessingThreshold);
-      tagWall(*wall.body, counts);
+      constexpr common::WallBit bits[] = {common::kLeftWall, common::kRightWall,
+                                          common::kBottomWall, common::kTopWall};
+      tagWall(*wall.body, counts, bits[side]);
       world.addRigidBody(wall.body.get(), kWallGroup, kWallMask);
     } else if (!on[static_cast<std::size_t>(side)] && wall.body != nullptr) {
       world.removeRigidBody(wall.body.get());

@@ -18,8 +18,8 @@ void ChipmunkAdapter::load(const Scene& scene) {
   worldSettings_ = scene.world;
   hashLeft_ = false;
   hashesLeft_ = 0;
-  build(scene.balls);
   contacts_ = {};
+  build(scene.balls);
   dragLoss_ = 0.0;
   chipmunkSteps_ = 0;
   ballsBroughtBack_ = 0;
@@ -69,7 +69,10 @@ void ChipmunkAdapter::build(std::span<const BallDef> balls) {
   for (const BallDef& ball : balls) {
     balls_.push_back(createBall(*space_, ball, worldSettings_.ballCollisions));
     bodies_.push_back(balls_.back().body);
+    // Its index, for the contact counter (contact_counter.h).
+    cpBodySetUserData(bodies_.back(), reinterpret_cast<cpDataPointer>(bodies_.size() - 1));
   }
+  contacts_.touches.assign(balls.size(), 0);  // a new space: contacts begin anew
 }
 
 double ChipmunkAdapter::chooseWallThickness() const {
@@ -120,6 +123,7 @@ void ChipmunkAdapter::setBall(std::size_t index, const BallDef& ball) {
   setBallShape(*space_, body, ball.radius, ball.mass);
   masses_[index] = ball.mass;
   radii_[index] = ball.radius;
+  contacts_.touches[index] = 0;  // an edited ball begins its contacts anew
   // The slop is a fraction of the smallest radius, which this ball may have changed.
   setContactCorrection(space_->get(), radii_, settings_.collisionSlop, settings_.collisionBias);
 }

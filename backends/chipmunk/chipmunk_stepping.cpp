@@ -46,7 +46,7 @@ void ChipmunkAdapter::step(double dt, std::span<const Vec2> forces) {
     cpSpaceStep(space_->get(), h);
     if (anyWall) {
       for (std::size_t i = 0; i < bodies_.size(); ++i)
-        walls.contain(bodies_[i], radii_[i], masses_[i]);
+        walls.contain(bodies_[i], radii_[i], masses_[i], contacts_.touches[i]);
     }
     ++stepsTaken;
   }

@@ -3,9 +3,10 @@
 namespace fooball::chipmunk_detail {
 
 WallContainment::WallContainment(const Box& box, const Walls& walls, Vec2 gravity, double thickness)
-    : mirror_(box, walls, gravity), thickness_(thickness) {}
+    : box_(box), mirror_(box, walls, gravity), thickness_(thickness) {}
 
-void WallContainment::bringBack(cpBody* ball, double radius, double mass) {
+void WallContainment::bringBack(cpBody* ball, double radius, double mass,
+                                common::WallTouches& touches) {
   const cpVect position = cpBodyGetPosition(ball);
   const cpVect velocity = cpBodyGetVelocity(ball);
   Vec2 p{position.x, position.y};
@@ -18,7 +19,7 @@ void WallContainment::bringBack(cpBody* ball, double radius, double mass) {
   for (const common::WallMirror::AxisReturn& axis : {brought.x, brought.y}) {
     if (!axis.brought) continue;
     impulse_ += mass * axis.impulse;
-    if (axis.depth > unseen) ++wallCollisions_;
+    if (axis.depth > unseen) wallCollisions_ += common::touchWall(touches, axis.wall);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "common/wall_mirror.h"
+#include "common/wall_touches.h"
 #include "fooball/scene.h"
 
 namespace fooball::chipmunk_detail {
@@ -25,17 +26,21 @@ namespace fooball::chipmunk_detail {
 ///
 /// The mirror and its energy are common::WallMirror's. The bounce is counted as a wall
 /// collision only when Chipmunk cannot have seen it: a centre more than radius + 2·thickness
-/// beyond the face was beyond the wall's reach, so no contact began (contact_counter.h).
+/// beyond the face was beyond the wall's reach, so no contact began (contact_counter.h); and, as
+/// every wall collision, only when the ball did not touch that wall already
+/// (common/wall_touches.h). The same pass forgets the walls each ball has left.
 class WallContainment {
  public:
   /// `gravity` (m/s²) as the step flies the balls; `thickness` (m) of the walls.
   WallContainment(const Box& box, const Walls& walls, Vec2 gravity, double thickness);
 
-  /// Brings `ball` (radius in m, mass in kg) back if its centre is beyond a wall.
-  void contain(cpBody* ball, double radius, double mass) {
+  /// Brings `ball` (radius in m, mass in kg) back if its centre is beyond a wall; `touches`
+  /// are the walls it touches.
+  void contain(cpBody* ball, double radius, double mass, common::WallTouches& touches) {
     const cpVect p = cpBodyGetPosition(ball);
+    if (touches != 0) touches = common::stillTouching(touches, {p.x, p.y}, radius, box_);
     if (mirror_.inside(p.x, p.y)) return;
-    bringBack(ball, radius, mass);
+    bringBack(ball, radius, mass, touches);
   }
 
   std::uint64_t ballsBroughtBack() const { return ballsBroughtBack_; }
@@ -43,8 +48,9 @@ class WallContainment {
   double impulse() const { return impulse_; }  ///< N·s, Σ|Δp| of the velocities turned back
 
  private:
-  void bringBack(cpBody* ball, double radius, double mass);
+  void bringBack(cpBody* ball, double radius, double mass, common::WallTouches& touches);
 
+  Box box_;
   common::WallMirror mirror_;
   double thickness_;  ///< m
   std::uint64_t ballsBroughtBack_ = 0;

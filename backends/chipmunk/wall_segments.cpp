@@ -1,6 +1,9 @@
 #include "wall_segments.h"
 
+#include <cstdint>
+
 #include "collision_filter.h"
+#include "common/wall_touches.h"
 #include "elastic_material.h"
 
 namespace fooball::chipmunk_detail {
@@ -36,6 +39,10 @@ cpShape* createWall(Space& space, Side side, const Box& box, double thickness) {
   cpShape* shape = space.add(cpSegmentShapeNew(cpSpaceGetStaticBody(space.get()), a, b, t));
   makeElastic(shape);
   cpShapeSetCollisionType(shape, kWallType);
+  // Which wall, for the contact counter (contact_counter.h).
+  constexpr common::WallBit bits[] = {common::kLeftWall, common::kRightWall, common::kBottomWall,
+                                      common::kTopWall};
+  cpShapeSetUserData(shape, reinterpret_cast<cpDataPointer>(std::uintptr_t{bits[side]}));
   cpShapeSetFilter(shape, wallFilter());
   return shape;
 }

@@ -11,15 +11,18 @@ namespace {
 /// One axis against the faces at `low` and `high` (m; ±∞ where a wall is off), with gravity's
 /// component `g` (m/s²) along it.
 WallMirror::AxisReturn bringBackAxis(double& position, double& velocity, double low, double high,
-                                     double g) {
+                                     double g, WallBit lowWall, WallBit highWall) {
   double face;
   double inward;  // +1 at the low face, −1 at the high one
+  WallBit wall;
   if (position < low) {
     face = low;
     inward = 1.0;
+    wall = lowWall;
   } else if (position > high) {
     face = high;
     inward = -1.0;
+    wall = highWall;
   } else {
     return {};
   }
@@ -40,7 +43,7 @@ WallMirror::AxisReturn bringBackAxis(double& position, double& velocity, double 
     position = std::clamp(apex, std::min(face, mirrored), std::max(face, mirrored));
     velocity = 0.0;
   }
-  return {true, before * inward < 0.0, depth, std::abs(velocity - before)};
+  return {true, before * inward < 0.0, depth, std::abs(velocity - before), wall};
 }
 
 }  // namespace
@@ -54,8 +57,8 @@ WallMirror::WallMirror(const Box& box, const Walls& walls, Vec2 gravity) : gravi
 }
 
 WallMirror::Return WallMirror::bringBack(Vec2& position, Vec2& velocity) const {
-  return {bringBackAxis(position.x, velocity.x, lowX_, highX_, gravity_.x),
-          bringBackAxis(position.y, velocity.y, lowY_, highY_, gravity_.y)};
+  return {bringBackAxis(position.x, velocity.x, lowX_, highX_, gravity_.x, kLeftWall, kRightWall),
+          bringBackAxis(position.y, velocity.y, lowY_, highY_, gravity_.y, kBottomWall, kTopWall)};
 }
 
 }  // namespace fooball::common

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "common/wall_touches.h"
 #include "fooball/scene.h"
 #include "fooball/vec2.h"
 
@@ -29,10 +30,11 @@ class WallMirror {
 
   /// What bringing back one axis of one ball did.
   struct AxisReturn {
-    bool brought = false;  ///< the centre was beyond a face on this axis
-    bool leaving = false;  ///< its velocity still pointed out of the box: it bounced here
-    double depth = 0.0;    ///< m, how far beyond the face the centre was
-    double impulse = 0.0;  ///< N·s per kg, |Δv|
+    bool brought = false;      ///< the centre was beyond a face on this axis
+    bool leaving = false;      ///< its velocity still pointed out of the box: it bounced here
+    double depth = 0.0;        ///< m, how far beyond the face the centre was
+    double impulse = 0.0;      ///< N·s per kg, |Δv|
+    WallBit wall = kLeftWall;  ///< the wall whose face it was beyond (when brought)
   };
   struct Return {
     AxisReturn x;

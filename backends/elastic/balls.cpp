@@ -25,11 +25,13 @@ void Balls::assign(std::span<const BallDef> balls) {
   const std::size_t count = balls.size();
   common::resizeExactly(ball, count);
   common::resizeExactly(id, count);
+  common::resizeExactly(touches, count);
   for (std::size_t i = 0; i < count; ++i) {
     const BallDef& def = balls[i];
     ball[i] = {def.position.x, def.position.y, def.velocity.x,
                def.velocity.y, def.radius,     def.mass};
     id[i] = static_cast<std::uint32_t>(i);
+    touches[i] = 0;
   }
 }
 
@@ -46,6 +48,7 @@ void Balls::permute(std::span<std::uint32_t> order, std::span<std::uint32_t> scr
   struct Held {
     Ball ball;
     std::uint32_t id;
+    common::WallTouches touches;
   };
   const std::size_t ringSize = scratch.size_bytes() / sizeof(Held);
   if (!movesBackLessThan(order, ringSize)) {
@@ -57,14 +60,15 @@ void Balls::permute(std::span<std::uint32_t> order, std::span<std::uint32_t> scr
     const std::size_t source = order[k];
     Held next;
     if (source >= k) {
-      next = {ball[source], id[source]};  // not overwritten yet
+      next = {ball[source], id[source], touches[source]};  // not overwritten yet
     } else {
       std::memcpy(&next, ring + source % ringSize * sizeof(Held), sizeof(Held));
     }
-    const Held leaving{ball[k], id[k]};
+    const Held leaving{ball[k], id[k], touches[k]};
     std::memcpy(ring + k % ringSize * sizeof(Held), &leaving, sizeof(Held));
     ball[k] = next.ball;
     id[k] = next.id;
+    touches[k] = next.touches;
     order[k] = static_cast<std::uint32_t>(k);
   }
 }
@@ -76,6 +80,7 @@ void Balls::permuteByCycles(std::span<std::uint32_t> order) {
     if (order[start] == start) continue;
     const Ball firstBall = ball[start];
     const std::uint32_t firstId = id[start];
+    const common::WallTouches firstTouches = touches[start];
     std::uint32_t slot = start;
     for (;;) {
       const std::uint32_t source = order[slot];
@@ -83,17 +88,20 @@ void Balls::permuteByCycles(std::span<std::uint32_t> order) {
       if (source == start) {
         ball[slot] = firstBall;
         id[slot] = firstId;
+        touches[slot] = firstTouches;
         break;
       }
       ball[slot] = ball[source];
       id[slot] = id[source];
+      touches[slot] = touches[source];
       slot = source;
     }
   }
 }
 
 std::size_t Balls::memoryBytes() const {
-  return ball.capacity() * sizeof(Ball) + id.capacity() * sizeof(std::uint32_t);
+  return ball.capacity() * sizeof(Ball) + id.capacity() * sizeof(std::uint32_t) +
+         touches.capacity() * sizeof(common::WallTouches);
 }
 
 }  // namespace fooball::elastic

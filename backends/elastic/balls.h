@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "common/wall_touches.h"
 #include "fooball/scene.h"
 
 namespace fooball::elastic {
@@ -20,10 +21,12 @@ struct Ball {
 };
 
 /// The balls in slots, reordered by cell now and then for locality. `id[slot]` is the scene
-/// index of the ball in `ball[slot]`. 52 bytes per ball, the bulk of the backend's memory.
+/// index of the ball in `ball[slot]`, `touches[slot]` the walls it touches. 53 bytes per ball, the
+/// bulk of the backend's memory.
 struct Balls {
   std::vector<Ball> ball;
   std::vector<std::uint32_t> id;
+  std::vector<common::WallTouches> touches;
 
   std::size_t size() const { return id.size(); }
   void assign(std::span<const BallDef> balls);

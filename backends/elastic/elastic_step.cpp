@@ -82,7 +82,7 @@ class ElasticWorld::StepJob {
       WallTally wallTally;
       double dragLoss = 0.0;
       loop([&](Ball& ball, std::size_t slot) {
-        if constexpr (walls) wallBounce.bounce(ball, wallTally);
+        if constexpr (walls) wallBounce.bounce(ball, w_.balls_.touches[slot], wallTally);
         if constexpr (fly) dragLoss += flight.fly(ball);
         if constexpr (findCells)
           cells.setCell(slot, cells.cellOf(ball.x, ball.y, ball.radius, parts.nextOrder));

@@ -25,6 +25,7 @@ void ElasticWorld::load(std::span<const BallDef> balls, const Box& box,
 void ElasticWorld::setBall(std::size_t slot, const BallDef& ball) {
   balls_.ball[slot] = {ball.position.x, ball.position.y, ball.velocity.x,
                        ball.velocity.y, ball.radius,     ball.mass};
+  balls_.touches[slot] = 0;  // an edited ball begins its contacts anew
   layout();
 }
 

@@ -22,10 +22,12 @@ double timeToReach(double span, double u, double a) {
 }  // namespace
 
 void WallBounce::bounceAxis(double& p, double& v, double r, double mass, const Axis& axis,
-                            WallTally& tally) {
+                            common::WallTouches& touches, WallTally& tally) {
   const double span = axis.length - 2.0 * r;  // m the centre can travel between the walls
   const bool low = p < r;
   const bool crossedOn = low ? axis.lowOn : axis.highOn && p > axis.length - r;
+  const common::WallBit crossed = low ? axis.lowWall : axis.highWall;
+  const common::WallBit other = low ? axis.highWall : axis.lowWall;
   if (crossedOn && span >= 0.0) {
     // Seen from the crossed wall: depth D > 0 (m) past it, outward speed W (m/s) and inward
     // acceleration a (m/s²).
@@ -40,6 +42,8 @@ void WallBounce::bounceAxis(double& p, double& v, double r, double mass, const A
       const double inward = std::sqrt(std::max(0.0, outward * outward + 2.0 * a * depth));
       p = low ? r : axis.length - r;
       v = low ? inward : -inward;
+      // It did not fly into the wall, so no collision begins; but it touches the wall now.
+      common::touchWall(touches, crossed);
     } else {
       // It crossed at speed u with ½u² = ½W² + aD (energy along the axis). Clamped at 0: for
       // rounding, or a ball pushed in deeper than its speed could carry it (a ball collision;
@@ -71,9 +75,14 @@ void WallBounce::bounceAxis(double& p, double& v, double r, double mass, const A
       const double perPeriod = 2.0 * (u + otherSpeed);
       tally.impulse +=
           mass * (periods * perPeriod + 2.0 * u + (fromOther ? 2.0 * otherSpeed : 0.0));
-      const double bouncesPerPeriod = toOther < kNever ? 2.0 : 1.0;
-      tally.bounces += static_cast<std::uint64_t>(std::min(periods * bouncesPerPeriod, 1e9)) + 1 +
-                       (fromOther ? 1 : 0);
+      // Whole periods between the two walls cross the box: each is two collisions. Periods of
+      // a bounce under gravity shorter than a substep rise by g·h²/8 at most: a ball resting on
+      // the wall, in the collision it began.
+      const double crossings = toOther < kNever ? 2.0 * periods : 0.0;
+      tally.bounces += static_cast<std::uint64_t>(std::min(crossings, 1e9));
+      if (crossings > 0.0) touches = 0;
+      tally.bounces += common::touchWall(touches, crossed);
+      if (fromOther) tally.bounces += common::touchWall(touches, other);
     }
   }
   // Put back at contact after rounding, or a ball wider than the box.

@@ -34,6 +34,7 @@ void EventDrivenWorld::load(const Scene& scene) {
     mass_[ball] = def.mass;
   }
   restingOn_.assign(count, 0);
+  touches_.assign(count, 0);
   restingCount_ = 0;
   woken_.clear();
   woken_.reserve(count);
@@ -63,6 +64,7 @@ void EventDrivenWorld::setBall(std::size_t index, const BallDef& ball) {
   balls_[index].velocity = ball.velocity;
   balls_[index].radius = ball.radius;
   mass_[index] = ball.mass;
+  touches_[index] = 0;  // an edited ball begins its contacts anew
   calendarValid_ = false;
 }
 
@@ -73,8 +75,10 @@ void EventDrivenWorld::step(double dt, std::span<const Vec2> forces) {
   applyForces(dt, forces);
   if (!calendarValid_) rebuild();
   const bool completed = runEvents(dt);
-  for (std::uint32_t ball = 0; ball < ballCount(); ++ball)
+  for (std::uint32_t ball = 0; ball < ballCount(); ++ball) {
     advance(ball, dt);
+    releaseWalls(ball);
+  }
   if (!completed) {
     ++statistics_.cutShortSteps;
     confineToWalls();
@@ -184,7 +188,7 @@ void EventDrivenWorld::confineToWalls() {
                              2.0 * component(world_.gravity, axis) * (contact - coordinate);
       const double newVelocity = inward * std::sqrt(std::max(squared, 0.0));
       counters_.wallImpulse += mass_[ball] * inward * (newVelocity - normalVelocity);
-      ++counters_.wallCollisions;
+      counters_.wallCollisions += touchWall(ball, wall);
       coordinate = contact;
       normalVelocity = newVelocity;
     }

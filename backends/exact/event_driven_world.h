@@ -6,6 +6,7 @@
 
 #include "axis.h"
 #include "ball_motion.h"
+#include "common/wall_touches.h"
 #include "event.h"
 #include "event_calendar.h"
 #include "event_cells.h"
@@ -146,6 +147,18 @@ class EventDrivenWorld {
     return restingCount_ != 0 && (restingOn_[ball] & axisSideBits(axis)) != 0;
   }
   bool wallOn(Side side) const;
+  /// Forgets the walls `ball` has left, seen where it is now: at each of its events and at the
+  /// end of each step (many bounces can fit in one step).
+  void releaseWalls(std::uint32_t ball) {
+    if (touches_[ball] != 0) {
+      touches_[ball] =
+          common::stillTouching(touches_[ball], balls_[ball].position, balls_[ball].radius, box_);
+    }
+  }
+  /// `wall` turned `ball` back: 1 when that begins a collision (common/wall_touches.h).
+  std::uint64_t touchWall(std::uint32_t ball, Side wall) {
+    return common::touchWall(touches_[ball], static_cast<common::WallBit>(sideBit(wall)));
+  }
   /// m, the centre coordinate at which a ball of `radius` touches `wall`.
   double contactCoordinate(Side wall, double radius) const;
 
@@ -158,6 +171,8 @@ class EventDrivenWorld {
   std::vector<BallSchedule> schedule_;  ///< per ball
   /// per ball, sideBit() of each wall it rests on, and kAsleep
   std::vector<std::uint8_t> restingOn_;
+  /// Per ball, the walls it touches (common/wall_touches.h; sideBit() is its WallBit).
+  std::vector<common::WallTouches> touches_;
   std::size_t restingCount_ = 0;  ///< balls resting on some wall or asleep
   double restSpeed_ = 0.0;   ///< m/s, |g|·ballRestTime/2, the least speed off a pressed contact
   double sleepSpeed_ = 0.0;  ///< m/s, |g|·ballRestTime, the most a ball falling asleep has

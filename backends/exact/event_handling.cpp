@@ -54,6 +54,8 @@ void EventDrivenWorld::handle(std::uint32_t ball, const Event& interaction) {
 void EventDrivenWorld::collide(std::uint32_t first, std::uint32_t second) {
   advance(first, now_);
   advance(second, now_);
+  releaseWalls(first);
+  releaseWalls(second);
   if (asleep(first) || asleep(second)) {
     if (asleep(first)) {
       meetSleeper(second, first);
@@ -77,6 +79,7 @@ void EventDrivenWorld::collide(std::uint32_t first, std::uint32_t second) {
 
 void EventDrivenWorld::bounce(std::uint32_t ball, Side wall) {
   advance(ball, now_);
+  releaseWalls(ball);
   const int axis = axisOf(wall);
   const double inward = isLowerSide(wall) ? 1.0 : -1.0;
   double& normalVelocity = componentRef(balls_[ball].velocity, axis);
@@ -85,13 +88,13 @@ void EventDrivenWorld::bounce(std::uint32_t ball, Side wall) {
   const double mass = mass_[ball];
   if (push > 0.0 && 2.0 * approachSpeed <= push * limits_.restBounceTime) {
     counters_.wallImpulse += mass * approachSpeed;
-    if (approachSpeed > 0.0) ++counters_.wallCollisions;
+    if (approachSpeed > 0.0) counters_.wallCollisions += touchWall(ball, wall);
     const double bound = 0.5 * push * limits_.restBounceTime;  // m/s, the most it drops
     statistics_.restEnergyBound += 0.5 * mass * bound * bound;
     layToRest(ball, wall);
   } else if (approachSpeed > 0.0) {
     counters_.wallImpulse += 2.0 * mass * approachSpeed;
-    ++counters_.wallCollisions;
+    counters_.wallCollisions += touchWall(ball, wall);
     normalVelocity = -normalVelocity;
   }
   ++balls_[ball].version;

@@ -6,17 +6,17 @@
 
 namespace fooball::xpbd {
 
-/// How long (substeps) a contact is remembered after its last active substep: a contact that is
-/// active again within this many substeps continues the same contact event rather than starting
-/// a new one. A ball resting on a wall or on another ball under gravity is pressed in (by g·h²)
-/// and pushed out every other substep or so: one resting contact, not a bounce per substep. A
-/// real bounce leaves the contact for many substeps (the pair separates at the approach speed),
-/// so a new hit of the same pair within this window is rare and would be missed: that is the
-/// price of counting a resting contact once. Measured over 20 s at the defaults: the gas preset
-/// counts 8'325, 8'313, 8'291 and 8'272 ball–ball collisions with a memory of 1, 2, 4 and 7
-/// substeps (exact: 8'329); the rain preset, settling into a pile, 173'348, 169'526, 164'583
-/// and 158'416, and wall bounces 15'387, 10'660, 10'108 and 9'462 (exact, which counts every
-/// bounce of a Zeno sequence: 176'122 and 16'555).
+/// How long (substeps) a ball–ball contact is remembered after its last active substep: a contact
+/// that is active again within this many substeps continues the same contact event rather than
+/// starting a new one (wall contacts follow common/wall_touches.h). A ball resting on another
+/// ball under gravity is pressed in (by g·h²) and pushed out every other substep or so: one
+/// resting contact, not a collision per substep. A real collision leaves the contact for many
+/// substeps (the pair separates at the approach speed), so a new hit of the same pair within this
+/// window is rare and would be missed: that is the price of counting a resting contact once.
+/// Measured over 20 s at the defaults: the gas preset counts 8'325, 8'313, 8'291 and 8'272
+/// ball–ball collisions with a memory of 1, 2, 4 and 7 substeps (exact: 8'329); the rain preset,
+/// settling into a pile, 173'348, 169'526, 164'583 and 158'416 (exact, which counts every bounce
+/// of a Zeno sequence: 176'122).
 inline constexpr std::uint32_t kContactMemory = 4;
 
 /// Which ball pairs (by scene index) were in contact in the last kContactMemory substeps: a

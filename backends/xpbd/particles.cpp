@@ -11,7 +11,7 @@ void Particles::assign(std::span<const BallDef> balls) {
   const std::size_t count = balls.size();
   common::resizeExactly(particle, count);
   common::resizeExactly(id, count);
-  common::resizeExactly(wallHistory, count);
+  common::resizeExactly(touches, count);
   common::resizeExactly(moved, count);
   for (std::size_t i = 0; i < count; ++i) {
     set(i, balls[i]);
@@ -22,7 +22,7 @@ void Particles::assign(std::span<const BallDef> balls) {
 void Particles::set(std::size_t slot, const BallDef& ball) {
   particle[slot] = {ball.position.x, ball.position.y, ball.velocity.x, ball.velocity.y,
                     ball.radius,     ball.mass,       ball.position.x, ball.position.y};
-  wallHistory[slot] = 0;
+  touches[slot] = 0;
   moved[slot] = 0;
 }
 
@@ -41,7 +41,7 @@ void Particles::permute(std::span<std::uint32_t> order) {
     if (order[start] == start) continue;
     const Particle firstParticle = particle[start];
     const std::uint32_t firstId = id[start];
-    const std::uint32_t firstHistory = wallHistory[start];
+    const common::WallTouches firstTouches = touches[start];
     const std::uint8_t firstMoved = moved[start];
     std::uint32_t slot = start;
     for (;;) {
@@ -50,13 +50,13 @@ void Particles::permute(std::span<std::uint32_t> order) {
       if (source == start) {
         particle[slot] = firstParticle;
         id[slot] = firstId;
-        wallHistory[slot] = firstHistory;
+        touches[slot] = firstTouches;
         moved[slot] = firstMoved;
         break;
       }
       particle[slot] = particle[source];
       id[slot] = id[source];
-      wallHistory[slot] = wallHistory[source];
+      touches[slot] = touches[source];
       moved[slot] = moved[source];
       slot = source;
     }
@@ -64,8 +64,8 @@ void Particles::permute(std::span<std::uint32_t> order) {
 }
 
 std::size_t Particles::memoryBytes() const {
-  return particle.capacity() * sizeof(Particle) +
-         (id.capacity() + wallHistory.capacity()) * sizeof(std::uint32_t) + moved.capacity();
+  return particle.capacity() * sizeof(Particle) + id.capacity() * sizeof(std::uint32_t) +
+         touches.capacity() * sizeof(common::WallTouches) + moved.capacity();
 }
 
 }  // namespace fooball::xpbd

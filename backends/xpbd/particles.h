@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "common/wall_touches.h"
 #include "fooball/scene.h"
 
 namespace fooball::xpbd {
@@ -20,13 +21,13 @@ struct Particle {
 };
 
 /// The balls in slots, reordered by grid cell now and then for locality. Per slot: the record,
-/// the scene index, the recent wall contacts (WallHistory) and whether a constraint moved the
-/// ball in this substep. 69 bytes per ball.
+/// the scene index, the walls it touches (common/wall_touches.h) and whether a constraint moved
+/// the ball in this substep. 70 bytes per ball.
 struct Particles {
   std::vector<Particle> particle;
-  std::vector<std::uint32_t> id;           ///< scene index of the ball in each slot
-  std::vector<std::uint32_t> wallHistory;  ///< one byte per wall, see wall_contacts.h
-  std::vector<std::uint8_t> moved;         ///< 1: a constraint moved the ball in this substep
+  std::vector<std::uint32_t> id;             ///< scene index of the ball in each slot
+  std::vector<common::WallTouches> touches;  ///< the walls each ball touches
+  std::vector<std::uint8_t> moved;           ///< 1: a constraint moved the ball in this substep
 
   std::size_t size() const { return id.size(); }
   void assign(std::span<const BallDef> balls);

@@ -2,19 +2,9 @@
 
 #include <cmath>
 
-#include "contact_memory.h"
-
 namespace fooball::xpbd {
 
 namespace {
-
-/// Bits 1 … kContactMemory of a wall's history byte: active in one of the substeps before.
-constexpr std::uint32_t kRecentBits = ((1u << kContactMemory) - 1u) << 1;
-static_assert(kContactMemory <= 7, "a wall's history is one byte");
-
-std::uint32_t wallShift(Wall wall) {
-  return 8u * static_cast<std::uint32_t>(wall);
-}
 
 /// The contact of `slot` with `wall` in this substep, pushed `depth` (m) back in: recorded the
 /// first time (one record per axis and ball, its index in recordOf), accumulated after. Returns
@@ -23,25 +13,29 @@ std::uint64_t touch(Particles& particles, std::uint32_t slot, Wall wall, double 
                     double depth, std::vector<WallContact>& contacts,
                     std::vector<std::uint32_t>& recordOf) {
   particles.moved[slot] = 1;
-  std::uint32_t& history = particles.wallHistory[slot];
-  const std::uint32_t shift = wallShift(wall);
   const std::uint32_t axisRecord = 2 * slot + (wall <= Wall::Right ? 0 : 1);
-  if ((history >> shift) & 1u) {
-    contacts[recordOf[axisRecord]].pushed += depth;
+  // A record of this substep's: the record at recordOf names this ball and wall (an index left
+  // from an earlier substep names another, or lies beyond the records).
+  const std::uint32_t record = recordOf[axisRecord];
+  if (record < contacts.size() && contacts[record].slot == slot && contacts[record].wall == wall) {
+    contacts[record].pushed += depth;
     return 0;
   }
-  history |= 1u << shift;
   recordOf[axisRecord] = static_cast<std::uint32_t>(contacts.size());
   contacts.push_back({slot, wall, before, depth, 0.0});
-  return ((history >> shift) & kRecentBits) == 0 ? 1 : 0;
+  const auto bit = static_cast<common::WallBit>(1u << static_cast<unsigned>(wall));
+  return common::touchWall(particles.touches[slot], bit);
 }
 
 }  // namespace
 
-void WallContacts::age(Particles& particles) {
-  // Each byte shifted by one, the bit leaving a byte dropped.
-  for (std::uint32_t& history : particles.wallHistory)
-    history = (history << 1) & 0xfefefefeu;
+void WallContacts::release(Particles& particles) const {
+  for (std::size_t slot = 0; slot < particles.size(); ++slot) {
+    common::WallTouches& touches = particles.touches[slot];
+    if (touches == 0) continue;
+    const Particle& p = particles.particle[slot];
+    touches = common::stillTouching(touches, {p.x, p.y}, p.radius, box_);
+  }
 }
 
 std::uint64_t WallContacts::project(Particles& particles, std::vector<WallContact>& contacts,

@@ -8,7 +8,7 @@
 
 namespace fooball::xpbd {
 
-/// The four walls, in the order of their bytes in Particles::wallHistory.
+/// The four walls, in the order of their bits in common::WallTouches.
 enum class Wall : std::uint8_t { Left, Right, Bottom, Top };
 
 /// A wall a ball was pushed out of in this substep.
@@ -27,16 +27,15 @@ struct WallContact {
 /// closed box keeps every ball whatever the pairs ask (a ball wider than the box sits at its
 /// middle).
 ///
-/// Contact events: Particles::wallHistory holds one byte per wall (Wall order), bit k set when
-/// the wall was active k substeps ago. A wall contact begins an event (a bounce) when the wall
-/// was not active in the kContactMemory substeps before: a ball resting on the floor, pressed
-/// in every other substep, is one contact, not a bounce per substep.
+/// Contact events by the rule of common/wall_touches.h (Particles::touches): a wall contact
+/// begins an event (a bounce) unless the ball still touches that wall: a ball resting on the
+/// floor, pressed in every other substep, is one contact, not a bounce per substep.
 class WallContacts {
  public:
   WallContacts(const Box& box, const Walls& walls) : box_(box), walls_(walls) {}
 
-  /// Shifts every ball's wall history by one substep (before the substep's first project()).
-  static void age(Particles& particles);
+  /// Forgets the walls each ball has left (before the substep moves them).
+  void release(Particles& particles) const;
 
   /// One pass: every ball pushed back inside the walls that are on; the contacts of this
   /// substep are added to `contacts` (first time) or accumulate their push. Returns the events

@@ -103,6 +103,8 @@ void XpbdWorld::deriveVelocities(double h) {
 }
 
 void XpbdWorld::substep(double h) {
+  const WallContacts walls(box_, world_.walls);
+  walls.release(particles_);
   predict(h);
   const bool collisions = world_.ballCollisions && particles_.size() > 1;
   if (collisions) {
@@ -116,8 +118,6 @@ void XpbdWorld::substep(double h) {
   } else {
     pairs_.clear();
   }
-  const WallContacts walls(box_, world_.walls);
-  WallContacts::age(particles_);
   wallContacts_.clear();
   for (int iteration = 0; iteration < iterations_; ++iteration) {
     if (pairs_.size() > 0) pairs_.project(particles_);

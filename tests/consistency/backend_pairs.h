@@ -33,10 +33,7 @@ inline std::vector<BackendPair> everyBackendPair() {
 /// A new `info` backend with the options its row in tests/backend_profiles.cpp gives this suite
 /// (BackendProfile::consistencyOptions).
 inline std::unique_ptr<Backend> createForConsistency(const BackendInfo& info) {
-  const std::string_view options = profileFor(info.name).consistencyOptions;
-  RunSpec spec{std::string(info.name), {}};
-  if (!options.empty()) spec = parseRunSpec(std::string(info.name).append(":").append(options));
-  return createBackend(spec);
+  return createWithOptions(info.name, profileFor(info.name).consistencyOptions);
 }
 
 /// "elastic_vs_box2d".

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fooball/scene.h"
+
 namespace fooball::gui {
 namespace {
 
@@ -47,6 +49,18 @@ TEST(CommandLine, NoArgumentsIsAnInteractiveRun) {
   EXPECT_FALSE(line.headless());
   EXPECT_FALSE(line.sceneFile || line.preset || line.backend || line.size);
   EXPECT_TRUE(line.compare.empty());
+}
+
+TEST(CommandLine, MoreBallsThanTheLimitAreRefusedNamingIt) {
+  const QString limit = QString::number(kMaxBalls);
+  EXPECT_EQ(parse({"--balls", limit}).balls, kMaxBalls);
+  try {
+    parse({"--balls", QString::number(kMaxBalls + 1)});
+    ADD_FAILURE() << "accepted " << kMaxBalls + 1 << " balls";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find(limit.toStdString()), std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(CommandLine, RejectsBadArgumentsWithOneLine) {

@@ -33,8 +33,8 @@ class SettingsSidebar : public QWidget {
  public:
   explicit SettingsSidebar(QWidget* parent = nullptr);
 
-  /// Spinner limit: well past the 100,000 balls the renderer is built for.
-  static constexpr int kMaxBallCount = 1'000'000;
+  /// Spinner limit: the one ball limit, the engine's (fooball/scene.h).
+  static constexpr int kMaxBallCount = static_cast<int>(kMaxBalls);
 
   RunListEditor* runList() const { return runList_; }
   RunCounters* counters() const { return counters_; }

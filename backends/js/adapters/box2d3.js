@@ -26,7 +26,7 @@
 const fs = require('fs');
 const path = require('path');
 const {kickVelocities} = require('./kick');
-const {WallImpulse, WallContacts, wallBoxes, mirrorInside} = require('./walls');
+const {WALL_BITS, WallImpulse, WallContacts, wallBoxes, mirrorInside} = require('./walls');
 
 const BALL = 6;
 const BALLS_CATEGORY = 0x0001;
@@ -157,7 +157,8 @@ async function create() {
   let bodies = [];                  // b2BodyId per scene index
   let shapes = [];                  // b2ShapeId per scene index
   let masses = new Float64Array(0);
-  let shapeBall = new Map();        // b2ShapeId.index1 → ball index, or −1 for a wall
+  let radii = new Float64Array(0);  // m, for the wall rule's release (walls.js)
+  let shapeBall = new Map();        // b2ShapeId.index1 → ball index, or −WALL_BITS[side] for a wall
   let walls = {};                   // side → b2ShapeId
   let wallBody = null;
   const wallContacts = new WallContacts();
@@ -224,7 +225,7 @@ async function create() {
         const box = B.b2MakeOffsetBox(hx, hy, vec, identity);
         const sd = shapeDef(WALLS_CATEGORY, BALLS_CATEGORY);
         walls[side] = B.b2CreatePolygonShape(wallBody, sd, box);
-        shapeBall.set(walls[side].index1, -1);
+        shapeBall.set(walls[side].index1, -WALL_BITS[side]);
         sd.delete();
         box.delete();
       } else if (!on && walls[side]) {
@@ -331,6 +332,7 @@ async function create() {
       bodies = new Array(n);
       shapes = new Array(n);
       masses = new Float64Array(n);
+      radii = new Float64Array(n);
       shapeBall = new Map();
       wallContacts.clear();
       walls = {};
@@ -340,6 +342,7 @@ async function create() {
       for (let i = 0; i < n; ++i) {
         addBall(scene.balls.subarray(BALL * i, BALL * (i + 1)), i);
         masses[i] = scene.balls[BALL * i + 5];
+        radii[i] = scene.balls[BALL * i + 4];
       }
       syncWalls();
       state = new Float64Array(4 * n);
@@ -373,6 +376,7 @@ async function create() {
       setVelocity(index, def[2], def[3]);
       ballShape(def, index);
       masses[index] = def[5];
+      radii[index] = def[4];
       keep(index, def[0], def[1], def[2], def[3]);
     },
 
@@ -397,6 +401,8 @@ async function create() {
                                                    scene.world.gravity, dt);
       };
       wallContacts.forEachCharged(charge);
+      const centre = (i) => [state[4 * i], state[4 * i + 1]];
+      wallContacts.walls.release(centre, (i) => radii[i], scene.width, scene.height);
     },
 
     readState(out) {

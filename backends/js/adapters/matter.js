@@ -25,7 +25,7 @@
 
 const Matter = require('matter-js');
 const {kickVelocities} = require('./kick');
-const {WallImpulse} = require('./walls');
+const {WALL_BITS, WallImpulse, WallTouches} = require('./walls');
 
 const PIXELS_PER_METRE = 64;
 const BALL = 6;  // doubles per ball in a scene
@@ -38,6 +38,8 @@ function create() {
   let engine = null;
   let balls = [];  // Body per scene index
   let masses = new Float64Array(0);
+  let radii = new Float64Array(0);  // m, for the wall rule's release (walls.js)
+  const wallTouches = new WallTouches();
   let walls = {};  // side → Body, present only while in the world
   let world = null;
   let box = {width: 0, height: 0};
@@ -83,7 +85,7 @@ function create() {
                                     frictionStatic: 0,
                                     slop: settings.slop,
                                   });
-    body.fooballIndex = -1;
+    body.fooballIndex = -WALL_BITS[side];
     return body;
   }
 
@@ -107,6 +109,8 @@ function create() {
     engine.gravity.y = -world.gravity[1] * PIXELS_PER_METRE * 1e-3;
   }
 
+  /// A contact that begins between two balls is a ball collision; with a wall (fooballIndex
+  /// −WALL_BITS[side]) a wall collision by the rule of WallTouches (walls.js).
   function countCollisions(event) {
     for (const pair of event.pairs) {
       const a = pair.bodyA.fooballIndex;
@@ -114,7 +118,7 @@ function create() {
       if (a >= 0 && b >= 0) {
         counters.ballCollisions += 1;
       } else {
-        counters.wallCollisions += 1;
+        counters.wallCollisions += wallTouches.touch(a >= 0 ? a : b, -(a >= 0 ? b : a));
       }
     }
   }
@@ -171,11 +175,14 @@ function create() {
       const n = scene.balls.length / BALL;
       let largest = 0;  // m
       masses = new Float64Array(n);
+      radii = new Float64Array(n);
+      wallTouches.clear();
       balls = new Array(n);
       for (let i = 0; i < n; ++i) {
         const def = scene.balls.subarray(BALL * i, BALL * (i + 1));
         balls[i] = ballBody(def, i);
         masses[i] = def[5];
+        radii[i] = def[4];
         largest = Math.max(largest, def[4]);
       }
       Composite.add(engine.world, balls);
@@ -202,6 +209,8 @@ function create() {
       Composite.remove(engine.world, balls[index]);
       balls[index] = ballBody(def, index);
       masses[index] = def[5];
+      radii[index] = def[4];
+      wallTouches.forget(index);
       Composite.add(engine.world, balls[index]);
     },
 
@@ -228,6 +237,9 @@ function create() {
         counters.wallImpulse += wallImpulse.charge(i, masses[i], v.x / velocityScale,
                                                    -v.y / velocityScale, world.gravity, dt);
       }
+      const centre = (i) => [balls[i].position.x / PIXELS_PER_METRE,
+                             -balls[i].position.y / PIXELS_PER_METRE];
+      wallTouches.release(centre, (i) => radii[i], box.width, box.height);
     },
 
     readState(out) {

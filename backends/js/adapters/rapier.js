@@ -23,7 +23,7 @@
 const fs = require('fs');
 const path = require('path');
 const {kickVelocities} = require('./kick');
-const {WallImpulse, WallContacts, wallBoxes, mirrorInside} = require('./walls');
+const {WALL_BITS, WallImpulse, WallContacts, wallBoxes, mirrorInside} = require('./walls');
 
 const VERSIONS = ['0.21.0', '0.19.3'];  // the option's choices, in the C++ side's order
 const BALL = 6;
@@ -44,7 +44,8 @@ async function create() {
   let queue = null;
   let bodies = [];
   let masses = new Float64Array(0);
-  let colliderBall = new Map();  // collider handle → ball index, or −1 for a wall
+  let radii = new Float64Array(0);  // m, for the wall rule's release (walls.js)
+  let colliderBall = new Map();  // collider handle → ball index, or −WALL_BITS[side] for a wall
   let walls = {};                // side → collider
   let wallBody = null;
   const wallContacts = new WallContacts();
@@ -98,7 +99,7 @@ async function create() {
                          .setFrictionCombineRule(R.CoefficientCombineRule.Min)
                          .setCollisionGroups(groups(WALLS_GROUP, BALLS_GROUP));
         walls[side] = world.createCollider(desc, wallBody);
-        colliderBall.set(walls[side].handle, -1);
+        colliderBall.set(walls[side].handle, -WALL_BITS[side]);
       } else if (!on && walls[side]) {
         colliderBall.delete(walls[side].handle);
         world.removeCollider(walls[side], false);
@@ -173,6 +174,7 @@ async function create() {
       const n = scene.balls.length / BALL;
       bodies = new Array(n);
       masses = new Float64Array(n);
+      radii = new Float64Array(n);
       colliderBall = new Map();
       wallContacts.clear();
       walls = {};
@@ -180,6 +182,7 @@ async function create() {
       for (let i = 0; i < n; ++i) {
         addBall(scene.balls.subarray(BALL * i, BALL * (i + 1)), i);
         masses[i] = scene.balls[BALL * i + 5];
+        radii[i] = scene.balls[BALL * i + 4];
       }
       syncWalls();
       velocities = new Float64Array(2 * n);
@@ -209,6 +212,7 @@ async function create() {
       body.setLinvel({x: def[2], y: def[3]}, true);
       ballCollider(def, index);
       masses[index] = def[5];
+      radii[index] = def[4];
     },
 
     step(dt, forces, stepCounters) {
@@ -231,6 +235,11 @@ async function create() {
         counters.wallImpulse += wallImpulse.charge(i, masses[i], v.x, v.y, scene.world.gravity, dt);
       };
       wallContacts.forEachCharged(charge);
+      const centre = (i) => {
+        const p = bodies[i].translation();
+        return [p.x, p.y];
+      };
+      wallContacts.walls.release(centre, (i) => radii[i], scene.width, scene.height);
     },
 
     readState(out) {

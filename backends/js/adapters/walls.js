@@ -25,27 +25,79 @@ class WallImpulse {
   }
 }
 
+/// The wall-collision rule of backends/common/wall_touches.h, which owns it (its constant and its
+/// two functions); this is its twin for the engines in the Node.js host, and
+/// tests/wall_count_test.cpp holds both to the same answers. A wall collision is one reversal of
+/// a ball's approach to a wall: a contact with a wall the ball still touches (it has not left it
+/// by a tenth of its radius since the wall last turned it back) is the collision it began, not a
+/// new one, so a resting ball whose contact breaks and begins again counts once.
+const WALL_RELEASE_FRACTION = 0.1;
+const WALL_BITS = {left: 1, right: 2, bottom: 4, top: 8};
+
+class WallTouches {
+  constructor() {
+    this.bits = new Map();  // ball index → the WALL_BITS of the walls it touches
+  }
+
+  clear() { this.bits.clear(); }
+  forget(ball) { this.bits.delete(ball); }
+
+  /// The wall `bit` turned ball `ball` back: 1 when that begins a collision, else 0.
+  touch(ball, bit) {
+    const touches = this.bits.get(ball) || 0;
+    this.bits.set(ball, touches | bit);
+    return (touches & bit) !== 0 ? 0 : 1;
+  }
+
+  /// Forgets the walls each ball has left; `centre(i)` is its [x, y] and `radius(i)` its radius
+  /// (m, y up), in the box [0, width] × [0, height].
+  release(centre, radius, width, height) {
+    for (const [ball, touches] of this.bits) {
+      const [x, y] = centre(ball);
+      const reach = (1 + WALL_RELEASE_FRACTION) * radius(ball);  // m, centre to wall
+      let kept = touches;
+      if (x > reach) kept &= ~WALL_BITS.left;
+      if (x < width - reach) kept &= ~WALL_BITS.right;
+      if (y > reach) kept &= ~WALL_BITS.bottom;
+      if (y < height - reach) kept &= ~WALL_BITS.top;
+      if (kept === 0) {
+        this.bits.delete(ball);
+      } else {
+        this.bits.set(ball, kept);
+      }
+    }
+  }
+}
+
 /// Which balls touch a wall, kept from an engine's contact begin and end events (Rapier's
 /// collision events, Box2D v3's contact touch events): a contact that begins between two balls is
 /// a ball–ball collision, between a ball and a wall a wall bounce; a ball that met a wall in a
-/// step or still touches one is charged its WallImpulse at the step's end.
+/// step or still touches one is charged its WallImpulse at the step's end. A contact that begins
+/// with a wall is a wall collision by the rule of WallTouches.
 class WallContacts {
   constructor() {
     this.touching = new Map();  // ball index → number of walls it touches
     this.met = new Set();       // balls with a wall contact beginning or ending in this step
+    this.walls = new WallTouches();
   }
 
   /// A wall was removed: its end events will not come, so touches are recounted from the next
   /// begins.
-  clear() { this.touching.clear(); }
+  clear() {
+    this.touching.clear();
+    this.walls.clear();
+  }
 
   /// Ball `ball` was replaced (an edit): its contacts are new.
-  forget(ball) { this.touching.delete(ball); }
+  forget(ball) {
+    this.touching.delete(ball);
+    this.walls.forget(ball);
+  }
 
   /// Call before the step's events.
   beginStep() { this.met.clear(); }
 
-  /// A contact between `a` and `b` (ball indices, −1 for a wall) began or ended.
+  /// A contact between `a` and `b` (ball indices, or −WALL_BITS[side] for a wall) began or ended.
   event(a, b, began, counters) {
     if (a >= 0 && b >= 0) {
       if (began) counters.ballCollisions += 1;
@@ -56,7 +108,7 @@ class WallContacts {
     this.met.add(ball);
     const touching = this.touching.get(ball) || 0;
     if (began) {
-      counters.wallCollisions += 1;
+      counters.wallCollisions += this.walls.touch(ball, -(a >= 0 ? b : a));
       this.touching.set(ball, touching + 1);
     } else if (touching <= 1) {
       this.touching.delete(ball);
@@ -99,4 +151,4 @@ function mirrorInside(x, y, vx, vy, width, height, on) {
   return x === x0 && y === y0 ? null : [x, y, vx, vy];
 }
 
-module.exports = {WallImpulse, WallContacts, wallBoxes, mirrorInside};
+module.exports = {WALL_BITS, WallTouches, WallImpulse, WallContacts, wallBoxes, mirrorInside};
