@@ -18,6 +18,7 @@
 
 #include "chart_reading.h"
 #include "charts/chart_panel.h"
+#include "control/scene_session.h"
 #include "fooball/number_text.h"
 #include "frames/run_feed.h"
 #include "gui_fixture.h"
@@ -165,7 +166,7 @@ TEST_F(CompareMode, TheReadoutFollowsRestartAndSingleStepsWhilePaused) {
   const double before = group().divergence(1).rmsPositionDifference;
   expectReadoutShows(*window->compareReadout(), runs(), "paused");
 
-  window->restart();
+  window->session().restart();
   const double restarted = group().divergence(1).rmsPositionDifference;
   ASSERT_LT(restarted, 1e-3 * before) << "at t = 0 only Box2D's float rounding differs";
   expectReadoutShows(*window->compareReadout(), runs(), "after Restart");

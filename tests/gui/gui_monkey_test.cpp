@@ -24,12 +24,12 @@
 
 #include "backend_profiles.h"
 #include "charts/chart_panel.h"
+#include "control/scene_commands.h"
 #include "gui_fixture.h"
 #include "robustness/case_run.h"
 #include "sidebar/run_list_editor.h"
 #include "sidebar/settings_sidebar.h"
 #include "widgets/log_slider.h"
-#include "window/scene_commands.h"
 #include "window/window_actions.h"
 
 namespace fooball::gui::testing {
@@ -66,7 +66,7 @@ class GuiMonkey : public GuiTest {
  protected:
   void SetUp() override {
     open(fooball::testing::emptyBox());
-    openPreset(*window, QStringLiteral("default"));
+    window->scenes().openPreset(QStringLiteral("default"));
     sidebar_ = window->sidebar();
     for (QAction* action : window->findChildren<QAction*>()) {
       if (action->shortcut() == QKeySequence(Qt::Key_Space)) pause_ = action;

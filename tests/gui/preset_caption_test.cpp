@@ -8,6 +8,7 @@
 #include <QRegularExpression>
 
 #include "charts/chart_panel.h"
+#include "control/scene_session.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
 #include "readouts/run_counters.h"
@@ -29,7 +30,7 @@ class PresetCaption : public GuiTest {
     ASSERT_GE(index, 0) << name.toStdString();
     box->setCurrentIndex(index);
     emit box->activated(index);
-    ASSERT_EQ(window->presetName(), name);
+    ASSERT_EQ(window->session().presetName(), name);
   }
 
   std::vector<Caption> captionsOf(Caption::Kind kind) const {
@@ -123,7 +124,7 @@ TEST_F(PresetCaption, ShowsThePresetsTextAndHidesAndShowsAgain) {
   EXPECT_EQ(lookFor.front().text, fromView(findPreset("rain")->lookFor));
 
   // A scene from a file has none.
-  window->loadScene(stillBalls(), QString(), QStringLiteral("still.json"));
+  window->session().loadScene(stillBalls(), QString(), QStringLiteral("still.json"));
   EXPECT_TRUE(captionsOf(Caption::Kind::LookFor).empty());
 }
 
@@ -163,7 +164,7 @@ TEST_F(PresetCaption, WallBoxesShowThreeWallsAndToggleOne) {
   EXPECT_EQ(window->charts()->markerLabels().back(), QStringLiteral("right wall on"));
 
   // Reset scene brings back the scene's own walls, and the boxes follow.
-  window->resetScene();
+  window->session().resetScene();
   EXPECT_EQ(group().world().walls, (Walls{true, false, true, true}));
   EXPECT_FALSE(wallBox("rightWallBox")->isChecked());
   EXPECT_TRUE(wallBox("bottomWallBox")->isChecked());
