@@ -23,6 +23,7 @@
 #include <string>
 
 #include "backend_profiles.h"
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "control/scene_commands.h"
 #include "gui_fixture.h"
@@ -322,8 +323,8 @@ class GuiMonkey : public GuiTest {
     runs().setStepPatience(stepPatience_);
     window->charts()->refresh();
     for (int run = 0; run < runs().runCount(); ++run) {
-      EXPECT_GT(window->charts()->storedSampleCount(run), 0u);
-      EXPECT_GT(window->charts()->displayedPointCount(ChartPanel::kEnergyChart, run), 0)
+      EXPECT_GT(storedSampleCount(*window->charts(), run), 0u);
+      EXPECT_GT(displayedPointCount(*window->charts(), ChartPanel::kEnergyChart, run), 0)
           << "E_kin " << runs().run(run).metrics().sums.kineticEnergy << " E_pot "
           << runs().run(run).metrics().sums.potentialEnergy;
     }

@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QRegularExpression>
 
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "control/scene_session.h"
 #include "fooball/presets.h"
@@ -106,12 +107,12 @@ TEST_F(PresetCaption, ShowsThePresetsTextAndHidesAndShowsAgain) {
   EXPECT_FALSE(lookFor.front().rect.intersects(boxWithCaption.adjusted(-1, -1, 1, 1)));
 
   // The close button hides it (and is no mouse tool press); the box takes the room.
-  const int markers = window->charts()->markerCount();
+  const int markers = markerCount(*window->charts());
   QTest::mouseClick(view(), Qt::LeftButton, {}, view()->lookForCloseButton().center());
   EXPECT_TRUE(captionsOf(Caption::Kind::LookFor).empty());
   EXPECT_FALSE(window->actions().lookFor()->isChecked());
   EXPECT_FALSE(group().interactions().pressed());
-  EXPECT_EQ(window->charts()->markerCount(), markers);
+  EXPECT_EQ(markerCount(*window->charts()), markers);
   EXPECT_GT(view()->transformForRun(0).boxRect().height(), boxWithCaption.height());
   EXPECT_TRUE(view()->lookForCloseButton().isEmpty());
 
@@ -158,10 +159,10 @@ TEST_F(PresetCaption, WallBoxesShowThreeWallsAndToggleOne) {
   wallBox("bottomWallBox")->click();
   EXPECT_EQ(group().world().walls, (Walls{true, false, false, true}));
   EXPECT_EQ(runs().run(0).world().walls, (Walls{true, false, false, true}));
-  EXPECT_EQ(window->charts()->markerLabels().back(), QStringLiteral("bottom wall off"));
+  EXPECT_EQ(markerLabels(*window->charts()).back(), QStringLiteral("bottom wall off"));
   wallBox("rightWallBox")->click();
   EXPECT_EQ(group().world().walls, (Walls{true, true, false, true}));
-  EXPECT_EQ(window->charts()->markerLabels().back(), QStringLiteral("right wall on"));
+  EXPECT_EQ(markerLabels(*window->charts()).back(), QStringLiteral("right wall on"));
 
   // Reset scene brings back the scene's own walls, and the boxes follow.
   window->session().resetScene();
