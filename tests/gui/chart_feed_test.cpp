@@ -16,31 +16,31 @@ class ChartFeed : public GuiTest {};
 
 TEST_F(ChartFeed, SingleRunChartsReceiveSamples) {
   open(fooball::testing::gas(40));
-  const std::size_t before = window->charts()->storedSampleCount(0);
+  const std::size_t before = storedSampleCount(*window->charts(), 0);
   frames(30);
-  EXPECT_GT(window->charts()->storedSampleCount(0), before + 5);
-  EXPECT_EQ(window->charts()->storedSampleCount(1), 0u);
+  EXPECT_GT(storedSampleCount(*window->charts(), 0), before + 5);
+  EXPECT_EQ(storedSampleCount(*window->charts(), 1), 0u);
 }
 
 TEST_F(ChartFeed, CompareModeChartsReceiveSamplesOfBothRuns) {
   open(fooball::testing::gas(40));
   QTest::mouseClick(window->sidebar()->runList()->addButton(), Qt::LeftButton);
   ASSERT_TRUE(runs().comparing());
-  const std::size_t main = window->charts()->storedSampleCount(0);
-  const std::size_t added = window->charts()->storedSampleCount(1);
+  const std::size_t main = storedSampleCount(*window->charts(), 0);
+  const std::size_t added = storedSampleCount(*window->charts(), 1);
   frames(30);
-  const std::size_t newMain = window->charts()->storedSampleCount(0) - main;
+  const std::size_t newMain = storedSampleCount(*window->charts(), 0) - main;
   EXPECT_GT(newMain, 5u);
-  EXPECT_EQ(window->charts()->storedSampleCount(1) - added, newMain)
+  EXPECT_EQ(storedSampleCount(*window->charts(), 1) - added, newMain)
       << "the runs are sampled together";
 }
 
 TEST_F(ChartFeed, PausedRunsAddNoSamples) {
   open(fooball::testing::gas(40));
   runs().setPaused(true);
-  const std::size_t before = window->charts()->storedSampleCount(0);
+  const std::size_t before = storedSampleCount(*window->charts(), 0);
   frames(30);
-  EXPECT_EQ(window->charts()->storedSampleCount(0), before);
+  EXPECT_EQ(storedSampleCount(*window->charts(), 0), before);
 }
 
 /// Calls `onPaint` when its watched widget gets a paint event.
@@ -63,15 +63,15 @@ TEST_F(ChartFeed, AFramesStepsAreSampledWhileTheNextFramesStepRunsFromTheStateBe
   // make due is taken while the next frame's step is out on its worker, beside the drawing,
   // from the state that step started from.
   open(fooball::testing::gas(40));
-  const std::size_t initial = window->charts()->storedSampleCount(0);
+  const std::size_t initial = storedSampleCount(*window->charts(), 0);
   frames(3);  // a sample every 3 frames that step: the third makes one due
-  EXPECT_EQ(window->charts()->storedSampleCount(0), initial) << "due, not taken yet";
+  EXPECT_EQ(storedSampleCount(*window->charts(), 0), initial) << "due, not taken yet";
   const double dueTime = group().time();
   const double dueKinetic = group().run(0).metrics().sums.kineticEnergy;
 
   std::optional<std::size_t> samplesWhileStepping;
   PaintProbe probe([&] {
-    if (runs().stepping()) samplesWhileStepping = window->charts()->storedSampleCount(0);
+    if (runs().stepping()) samplesWhileStepping = storedSampleCount(*window->charts(), 0);
   });
   view()->installEventFilter(&probe);
   frames(1);
@@ -82,11 +82,11 @@ TEST_F(ChartFeed, AFramesStepsAreSampledWhileTheNextFramesStepRunsFromTheStateBe
   EXPECT_GT(group().time(), dueTime);
 
   window->charts()->refresh();
-  const QList<QPointF> kinetic = window->charts()->displayedPoints(ChartPanel::kEnergyChart, 0);
+  const QList<QPointF> kinetic = displayedPoints(*window->charts(), ChartPanel::kEnergyChart, 0);
   ASSERT_FALSE(kinetic.isEmpty());
   EXPECT_EQ(kinetic.back().x(), dueTime);
   const double factor =
-      titleFactor(window->charts()->displayedValueAxisTitle(ChartPanel::kEnergyChart));
+      titleFactor(displayedValueAxisTitle(*window->charts(), ChartPanel::kEnergyChart));
   EXPECT_NEAR(kinetic.back().y() * factor, dueKinetic, 4e-16 * dueKinetic)
       << "the state before the step";
 }

@@ -20,6 +20,7 @@
 
 #include "axis_scale.h"
 #include "chart_csv.h"
+#include "chart_grid.h"
 #include "chart_reading.h"
 #include "run_palette.h"
 #include "series_points.h"
@@ -28,7 +29,18 @@
 namespace fooball::gui {
 namespace {
 
+using testing::chartShown;
+using testing::displayedMarkerCount;
+using testing::displayedPen;
+using testing::displayedPointCount;
+using testing::displayedPoints;
+using testing::displayedValueAxisTitle;
+using testing::displayedValueTickLabels;
+using testing::displayedYRange;
 using testing::expectTicksReadTheData;
+using testing::markerCount;
+using testing::runLegendText;
+using testing::storedSampleCount;
 using testing::titleFactor;
 
 constexpr int kMaxPoints = TimeChart::kMaxPointsPerCurve;
@@ -126,8 +138,8 @@ TEST_F(ChartPanelTest, CompareModeDrawsBothRunsInEveryChart) {
   panel.refresh();
   expectRunPlotsItsMetrics(panel, 0, 600, 1.0 / 60.0);
   expectRunPlotsItsMetrics(panel, 1, 600, 1.0 / 60.0);
-  EXPECT_TRUE(panel.chartShown(ChartPanel::kDivergenceChart));
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, 0), 0);  // no self-divergence
+  EXPECT_TRUE(chartShown(panel, ChartPanel::kDivergenceChart));
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kDivergenceChart, 0), 0);  // no self-divergence
 }
 
 TEST_F(ChartPanelTest, SingleModeDrawsRunZeroOnly) {
@@ -138,13 +150,13 @@ TEST_F(ChartPanelTest, SingleModeDrawsRunZeroOnly) {
   panel.refresh();
   expectRunPlotsItsMetrics(panel, 0, 600, 1.0 / 60.0);
   for (const int chart : kRunCharts)
-    EXPECT_EQ(panel.displayedPointCount(chart, 1), 0) << "chart " << chart;
-  EXPECT_EQ(panel.storedSampleCount(1), 0u);
-  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
+    EXPECT_EQ(displayedPointCount(panel, chart, 1), 0) << "chart " << chart;
+  EXPECT_EQ(storedSampleCount(panel, 1), 0u);
+  EXPECT_EQ(storedSampleCount(panel, ChartPanel::kBaselineRun), 0u);
   // One run and no baseline: nothing diverges, so the divergence chart and the run legend step
   // aside.
-  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
-  EXPECT_TRUE(panel.runLegendText().isEmpty());
+  EXPECT_FALSE(chartShown(panel, ChartPanel::kDivergenceChart));
+  EXPECT_TRUE(runLegendText(panel).isEmpty());
 }
 
 /// Checks that `points` are at the sample times of a run fed every `dt` from 0 and that each y,
@@ -187,33 +199,33 @@ void expectRunPlotsItsMetrics(const ChartPanel& panel, int run, int count, doubl
   const std::string name = "run " + std::to_string(run);
   const auto momentum = [run](double time) { return metricsAt(time, run).sums.momentum; };
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kMomentumChart, run, 0), count, dt,
+      displayedPoints(panel, ChartPanel::kMomentumChart, run, 0), count, dt,
       [&](double time) { return momentum(time).x; }, name + " px");
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kMomentumChart, run, 1), count, dt,
+      displayedPoints(panel, ChartPanel::kMomentumChart, run, 1), count, dt,
       [&](double time) { return momentum(time).y; }, name + " py");
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kMomentumChart, run, 2), count, dt,
+      displayedPoints(panel, ChartPanel::kMomentumChart, run, 2), count, dt,
       [&](double time) { return std::hypot(momentum(time).x, momentum(time).y); }, name + " |p|");
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kEnergyChart, run, 0), count, dt,
+      displayedPoints(panel, ChartPanel::kEnergyChart, run, 0), count, dt,
       [run](double time) { return metricsAt(time, run).sums.kineticEnergy; }, name + " kinetic");
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kEnergyChart, run, 1), count, dt,
+      displayedPoints(panel, ChartPanel::kEnergyChart, run, 1), count, dt,
       [run](double time) { return metricsAt(time, run).sums.potentialEnergy; },
       name + " potential");
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kEnergyChart, run, 2), count, dt,
+      displayedPoints(panel, ChartPanel::kEnergyChart, run, 2), count, dt,
       [run](double time) { return metricsAt(time, run).sums.totalEnergy(); }, name + " total");
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kResidualChart, run, 0), count, dt,
+      displayedPoints(panel, ChartPanel::kResidualChart, run, 0), count, dt,
       [run](double time) { return metricsAt(time, run).energyResidual; }, name + " residual",
-      titleFactor(panel.displayedValueAxisTitle(ChartPanel::kResidualChart)));
+      titleFactor(displayedValueAxisTitle(panel, ChartPanel::kResidualChart)));
   if (run == 0) {
-    EXPECT_TRUE(panel.displayedPoints(ChartPanel::kDivergenceChart, 0).isEmpty());
+    EXPECT_TRUE(displayedPoints(panel, ChartPanel::kDivergenceChart, 0).isEmpty());
   } else {
     expectPlotted(
-        panel.displayedPoints(ChartPanel::kDivergenceChart, run), count, dt,
+        displayedPoints(panel, ChartPanel::kDivergenceChart, run), count, dt,
         [run](double time) { return divergenceAt(time, run).rmsPositionDifference; },
         name + " divergence");
   }
@@ -250,8 +262,8 @@ TEST_F(FourRunsAndBaseline, EveryChartsTickLabelsBracketItsDataAtItsMagnitude) {
     include(ChartPanel::kDivergenceChart, baselineDivergenceAt(time).rmsPositionDifference);
   }
   for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
-    expectTicksReadTheData(panel.displayedValueTickLabels(chart),
-                           panel.displayedValueAxisTitle(chart), data[chart].first,
+    expectTicksReadTheData(displayedValueTickLabels(panel, chart),
+                           displayedValueAxisTitle(panel, chart), data[chart].first,
                            data[chart].second, chart == ChartPanel::kDivergenceChart,
                            "chart " + std::to_string(chart));
   }
@@ -278,24 +290,24 @@ void expectResidualChartReads(ChartPanel& panel, double size, int samples, doubl
     const double residual = residualOfSize(time, size).energyResidual;
     return relative ? residual / 10.0 : residual;
   };
-  const QString title = panel.displayedValueAxisTitle(ChartPanel::kResidualChart);
+  const QString title = displayedValueAxisTitle(panel, ChartPanel::kResidualChart);
   const double factor = titleFactor(title);
   // The chart's curves: the residual, then the relative residual.
-  expectPlotted(panel.displayedPoints(ChartPanel::kResidualChart, 0, relative ? 1 : 0), samples, dt,
-                expected, what + " (" + title.toStdString() + ")", factor);
+  expectPlotted(displayedPoints(panel, ChartPanel::kResidualChart, 0, relative ? 1 : 0), samples,
+                dt, expected, what + " (" + title.toStdString() + ")", factor);
   double low = HUGE_VAL;
   double high = -HUGE_VAL;
   for (int i = 0; i < samples; ++i) {
     low = std::min(low, expected(i * dt));
     high = std::max(high, expected(i * dt));
   }
-  const auto [axisMin, axisMax] = panel.displayedYRange(ChartPanel::kResidualChart);
+  const auto [axisMin, axisMax] = displayedYRange(panel, ChartPanel::kResidualChart);
   EXPECT_LE(axisMin * factor, low) << what;
   EXPECT_GE(axisMax * factor, high) << what;
   // Snug: the data fill a third of the axis at least, so no axis of ±1 J for 1e-14 J.
   EXPECT_GE(high - low, (axisMax - axisMin) * factor / 3.0)
       << what << " on " << axisMin << ".." << axisMax << " × " << factor;
-  const QStringList labels = panel.displayedValueTickLabels(ChartPanel::kResidualChart);
+  const QStringList labels = displayedValueTickLabels(panel, ChartPanel::kResidualChart);
   EXPECT_GE(labels.size(), 2) << what;
   expectTicksReadTheData(labels, title, low, high, false, what);
   // Whole numbers, or halves with one decimal; never "-0".
@@ -334,16 +346,16 @@ TEST_F(ChartPanelTest, ResidualChartReadsTheTrueValuesFromTinyToHuge) {
 TEST_F(FourRunsAndBaseline, EachRunIsDrawnInItsColour) {
   for (int run = 0; run < kRuns; ++run) {
     for (const int chart : kRunCharts)
-      EXPECT_EQ(panel.displayedPen(chart, run).color(), colours::runColour(run)) << chart;
+      EXPECT_EQ(displayedPen(panel, chart, run).color(), colours::runColour(run)) << chart;
     if (run > 0) {
-      EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, run).color(),
+      EXPECT_EQ(displayedPen(panel, ChartPanel::kDivergenceChart, run).color(),
                 colours::runColour(run));
-      EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, run).style(), Qt::SolidLine);
+      EXPECT_EQ(displayedPen(panel, ChartPanel::kDivergenceChart, run).style(), Qt::SolidLine);
     }
   }
-  EXPECT_EQ(panel.displayedPen(ChartPanel::kDivergenceChart, 0).style(), Qt::NoPen);
+  EXPECT_EQ(displayedPen(panel, ChartPanel::kDivergenceChart, 0).style(), Qt::NoPen);
   // The run legend names every run, run 0 as the reference.
-  const QString legend = panel.runLegendText();
+  const QString legend = runLegendText(panel);
   EXPECT_TRUE(legend.contains("elastic (reference)")) << legend.toStdString();
   for (const char* label : {"elastic:substeps=16", "exact", "box2d:substeps=8"})
     EXPECT_TRUE(legend.contains(label)) << label;
@@ -351,15 +363,15 @@ TEST_F(FourRunsAndBaseline, EachRunIsDrawnInItsColour) {
 
 TEST_F(FourRunsAndBaseline, BaselineIsAGreyDashedDivergenceCurveOnly) {
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), kSamples, kDt,
+      displayedPoints(panel, ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), kSamples, kDt,
       [](double time) { return baselineDivergenceAt(time).rmsPositionDifference; }, "baseline");
-  const QPen pen = panel.displayedPen(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun);
+  const QPen pen = displayedPen(panel, ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun);
   EXPECT_EQ(pen.color(), colours::neutralColour());
   EXPECT_EQ(pen.style(), Qt::CustomDashLine);
   EXPECT_EQ(colours::neutralColour().saturation(), 0);  // grey
   for (const int chart : kRunCharts)
-    EXPECT_EQ(panel.displayedPointCount(chart, ChartPanel::kBaselineRun), 0) << chart;
-  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), static_cast<std::size_t>(kSamples));
+    EXPECT_EQ(displayedPointCount(panel, chart, ChartPanel::kBaselineRun), 0) << chart;
+  EXPECT_EQ(storedSampleCount(panel, ChartPanel::kBaselineRun), static_cast<std::size_t>(kSamples));
 }
 
 TEST_F(FourRunsAndBaseline, DivergenceAxisIsLogAndBracketsTheData) {
@@ -367,14 +379,14 @@ TEST_F(FourRunsAndBaseline, DivergenceAxisIsLogAndBracketsTheData) {
   double lowest = HUGE_VAL;
   double highest = 0.0;
   for (const int run : {1, 2, 3, ChartPanel::kBaselineRun}) {
-    for (const QPointF& point : panel.displayedPoints(ChartPanel::kDivergenceChart, run)) {
+    for (const QPointF& point : displayedPoints(panel, ChartPanel::kDivergenceChart, run)) {
       lowest = std::min(lowest, point.y());
       highest = std::max(highest, point.y());
     }
   }
   ASSERT_LT(lowest, 1e-12);
   ASSERT_GT(highest, 1e2);
-  const auto [axisMin, axisMax] = panel.displayedYRange(ChartPanel::kDivergenceChart);
+  const auto [axisMin, axisMax] = displayedYRange(panel, ChartPanel::kDivergenceChart);
   EXPECT_LE(axisMin, lowest);
   EXPECT_GE(axisMax, highest);
   // Snug: within a label step of the data (16 decades on a plot with room for four or five
@@ -412,11 +424,11 @@ TEST_F(ChartPanelTest, DivergenceAxisSkipsValuesThatAreNotPositive) {
     panel.addSample(1, metricsAt(time, 1), divergence);
   }
   panel.refresh();
-  const QList<QPointF> points = panel.displayedPoints(ChartPanel::kDivergenceChart, 1);
+  const QList<QPointF> points = displayedPoints(panel, ChartPanel::kDivergenceChart, 1);
   ASSERT_EQ(points.size(), 6);
   EXPECT_EQ(points.front().y(), 1e-12);
   EXPECT_EQ(points.back().y(), 1e3);
-  const auto [axisMin, axisMax] = panel.displayedYRange(ChartPanel::kDivergenceChart);
+  const auto [axisMin, axisMax] = displayedYRange(panel, ChartPanel::kDivergenceChart);
   EXPECT_GT(axisMin, 0.0);
   EXPECT_LE(axisMin, 1e-12);
   EXPECT_GE(axisMax, 1e3);
@@ -426,33 +438,33 @@ TEST_F(ChartPanelTest, DivergenceAxisSkipsValuesThatAreNotPositive) {
 
 TEST_F(ChartPanelTest, DivergenceChartNeedsTwoRunsOrTheBaseline) {
   panel.reset({"elastic"});
-  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_FALSE(chartShown(panel, ChartPanel::kDivergenceChart));
   panel.setBaselineShown(true);
-  EXPECT_TRUE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_TRUE(chartShown(panel, ChartPanel::kDivergenceChart));
   panel.setBaselineShown(false);
-  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_FALSE(chartShown(panel, ChartPanel::kDivergenceChart));
   panel.addRun("exact");
-  EXPECT_TRUE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_TRUE(chartShown(panel, ChartPanel::kDivergenceChart));
   toggleNamed(panel, "divergenceToggle")->setChecked(false);
-  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
-  EXPECT_TRUE(panel.chartShown(ChartPanel::kEnergyChart));
+  EXPECT_FALSE(chartShown(panel, ChartPanel::kDivergenceChart));
+  EXPECT_TRUE(chartShown(panel, ChartPanel::kEnergyChart));
   toggleNamed(panel, "divergenceToggle")->setChecked(true);
   panel.removeRun(1);
-  EXPECT_FALSE(panel.chartShown(ChartPanel::kDivergenceChart));
+  EXPECT_FALSE(chartShown(panel, ChartPanel::kDivergenceChart));
 }
 
 TEST_F(ChartPanelTest, HidingTheBaselineDropsItsHistory) {
   panel.reset({"elastic", "exact"});
   panel.setBaselineShown(true);
   addBaseline(panel, 50, 0.01);
-  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 50u);
+  EXPECT_EQ(storedSampleCount(panel, ChartPanel::kBaselineRun), 50u);
   panel.setBaselineShown(false);
-  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
+  EXPECT_EQ(storedSampleCount(panel, ChartPanel::kBaselineRun), 0u);
   addBaseline(panel, 50, 0.01);  // ignored while hidden
   panel.setBaselineShown(true);
   panel.refresh();
-  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), 0);
+  EXPECT_EQ(storedSampleCount(panel, ChartPanel::kBaselineRun), 0u);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), 0);
 }
 
 TEST_F(ChartPanelTest, AddingARunKeepsTheOthersHistory) {
@@ -460,21 +472,21 @@ TEST_F(ChartPanelTest, AddingARunKeepsTheOthersHistory) {
   addRun(panel, 0, 300, 0.01);  // 0 … 2.99 s alone
   panel.addRun("exact");        // compare mode begins at 3 s
   EXPECT_EQ(panel.runCount(), 2);
-  EXPECT_EQ(panel.storedSampleCount(0), 300u);
-  EXPECT_EQ(panel.storedSampleCount(1), 0u);
+  EXPECT_EQ(storedSampleCount(panel, 0), 300u);
+  EXPECT_EQ(storedSampleCount(panel, 1), 0u);
   addRun(panel, 0, 100, 0.01, 3.0);
   addRun(panel, 1, 100, 0.01, 3.0);
   panel.addRun("box2d");
   addRun(panel, 2, 10, 0.01, 4.0);
   panel.refresh();
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), 400);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 1), 100);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 2), 10);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 0), 400);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 1), 100);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 2), 10);
   // Run 0's curve still starts at t = 0 with the values it had then.
-  const QList<QPointF> total = panel.displayedPoints(ChartPanel::kEnergyChart, 0, 2);
+  const QList<QPointF> total = displayedPoints(panel, ChartPanel::kEnergyChart, 0, 2);
   ASSERT_FALSE(total.isEmpty());
   EXPECT_EQ(total.front(), QPointF(0.0, metricsAt(0.0).sums.totalEnergy()));
-  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 2, 2).color(), colours::runColour(2));
+  EXPECT_EQ(displayedPen(panel, ChartPanel::kEnergyChart, 2, 2).color(), colours::runColour(2));
 }
 
 TEST_F(ChartPanelTest, RemovingARunShiftsTheLaterOnesDown) {
@@ -484,31 +496,31 @@ TEST_F(ChartPanelTest, RemovingARunShiftsTheLaterOnesDown) {
   panel.removeRun(1);
   panel.refresh();
   ASSERT_EQ(panel.runCount(), 3);
-  EXPECT_EQ(panel.storedSampleCount(0), 10u);
-  EXPECT_EQ(panel.storedSampleCount(1), 30u);  // box2d's
-  EXPECT_EQ(panel.storedSampleCount(2), 40u);  // xpbd's
-  EXPECT_EQ(panel.storedSampleCount(3), 0u);
+  EXPECT_EQ(storedSampleCount(panel, 0), 10u);
+  EXPECT_EQ(storedSampleCount(panel, 1), 30u);  // box2d's
+  EXPECT_EQ(storedSampleCount(panel, 2), 40u);  // xpbd's
+  EXPECT_EQ(storedSampleCount(panel, 3), 0u);
   // The run now at index 1 plots what run 2 was fed, in the colour of index 1.
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kEnergyChart, 1, 2), 30, 0.01,
+      displayedPoints(panel, ChartPanel::kEnergyChart, 1, 2), 30, 0.01,
       [](double time) { return metricsAt(time, 2).sums.totalEnergy(); }, "box2d total");
   expectPlotted(
-      panel.displayedPoints(ChartPanel::kDivergenceChart, 2), 40, 0.01,
+      displayedPoints(panel, ChartPanel::kDivergenceChart, 2), 40, 0.01,
       [](double time) { return divergenceAt(time, 3).rmsPositionDifference; }, "xpbd divergence");
-  EXPECT_EQ(panel.displayedPen(ChartPanel::kEnergyChart, 1, 2).color(), colours::runColour(1));
-  const QString legend = panel.runLegendText();
+  EXPECT_EQ(displayedPen(panel, ChartPanel::kEnergyChart, 1, 2).color(), colours::runColour(1));
+  const QString legend = runLegendText(panel);
   EXPECT_FALSE(legend.contains("exact")) << legend.toStdString();
   EXPECT_LT(legend.indexOf("box2d"), legend.indexOf("xpbd"));
 
   // Removing run 0 makes the next the reference.
   panel.removeRun(0);
-  EXPECT_EQ(panel.storedSampleCount(0), 30u);
-  EXPECT_TRUE(panel.runLegendText().contains("box2d (reference)"));
+  EXPECT_EQ(storedSampleCount(panel, 0), 30u);
+  EXPECT_TRUE(runLegendText(panel).contains("box2d (reference)"));
   panel.removeRun(1);
   panel.removeRun(0);  // the last run stays
   panel.removeRun(5);  // no such run
   EXPECT_EQ(panel.runCount(), 1);
-  EXPECT_EQ(panel.storedSampleCount(0), 30u);
+  EXPECT_EQ(storedSampleCount(panel, 0), 30u);
 }
 
 TEST_F(ChartPanelTest, RenamingARunKeepsItsHistory) {
@@ -519,11 +531,11 @@ TEST_F(ChartPanelTest, RenamingARunKeepsItsHistory) {
   addRun(panel, 0, 20, 0.01);
   addRun(panel, 1, 20, 0.01);
   panel.renameRun(1, "elastic:substeps=16");
-  EXPECT_EQ(panel.storedSampleCount(1), 20u);
+  EXPECT_EQ(storedSampleCount(panel, 1), 20u);
   panel.refresh();
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 1), 20);
-  EXPECT_TRUE(panel.runLegendText().contains("elastic:substeps=16"));
-  EXPECT_FALSE(panel.runLegendText().contains("exact"));
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 1), 20);
+  EXPECT_TRUE(runLegendText(panel).contains("elastic:substeps=16"));
+  EXPECT_FALSE(runLegendText(panel).contains("exact"));
   ASSERT_TRUE(panel.exportCsv(path));
   const QList<QByteArray> lines = csvLines(path);
   ASSERT_EQ(lines.size(), 41);
@@ -544,24 +556,24 @@ TEST_F(ChartPanelTest, EightRunsAreTheMost) {
     addRun(panel, run, 100 + run, 0.01);
   panel.refresh();
   for (int run = 0; run < 8; ++run) {
-    EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, run), 100 + run);
-    EXPECT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, run),
+    EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, run), 100 + run);
+    EXPECT_EQ(displayedPointCount(panel, ChartPanel::kDivergenceChart, run),
               run == 0 ? 0 : 100 + run);
-    EXPECT_EQ(panel.displayedPen(ChartPanel::kMomentumChart, run, 2).color(),
+    EXPECT_EQ(displayedPen(panel, ChartPanel::kMomentumChart, run, 2).color(),
               colours::runColour(run));
-    EXPECT_TRUE(panel.runLegendText().contains(labels[run] + (run == 0 ? " (" : "")));
+    EXPECT_TRUE(runLegendText(panel).contains(labels[run] + (run == 0 ? " (" : "")));
   }
-  EXPECT_EQ(panel.storedSampleCount(8), 0u);
-  EXPECT_FALSE(panel.runLegendText().contains(labels[8]));
+  EXPECT_EQ(storedSampleCount(panel, 8), 0u);
+  EXPECT_FALSE(runLegendText(panel).contains(labels[8]));
 }
 
 TEST_F(ChartPanelTest, ViewWaitsForARefresh) {
   panel.reset({"elastic"});
   addRun(panel, 0, 100, 0.01);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), 0);
-  EXPECT_EQ(panel.storedSampleCount(0), 100u);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 0), 0);
+  EXPECT_EQ(storedSampleCount(panel, 0), 100u);
   panel.refresh();
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), 100);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 0), 100);
 }
 
 TEST_F(ChartPanelTest, PointsStayBoundedForLongRuns) {
@@ -569,7 +581,7 @@ TEST_F(ChartPanelTest, PointsStayBoundedForLongRuns) {
   // 10⁵ samples a millisecond apart: the 20 s window alone holds 20 000 of them.
   addRun(panel, 0, 100'000, 1e-3);
   addRun(panel, 1, 100'000, 1e-3);
-  EXPECT_LE(panel.storedSampleCount(0),
+  EXPECT_LE(storedSampleCount(panel, 0),
             SampleHistory::kDefaultWholeRunCapacity + SampleHistory::kDefaultRecentCapacity);
   for (const bool wholeRun : {false, true}) {
     panel.setShowWholeRun(wholeRun);
@@ -578,8 +590,8 @@ TEST_F(ChartPanelTest, PointsStayBoundedForLongRuns) {
       for (int run = chart == ChartPanel::kDivergenceChart ? 1 : 0; run < 2; ++run) {
         // Two points per pixel column of a plot a few hundred pixels wide (the panel's grid
         // has two columns), however many samples.
-        EXPECT_GT(panel.displayedPointCount(chart, run), TimeChart::kMinPointsPerCurve);
-        EXPECT_LE(panel.displayedPointCount(chart, run), kMaxPoints);
+        EXPECT_GT(displayedPointCount(panel, chart, run), TimeChart::kMinPointsPerCurve);
+        EXPECT_LE(displayedPointCount(panel, chart, run), kMaxPoints);
       }
     }
   }
@@ -590,10 +602,10 @@ TEST_F(ChartPanelTest, WholeRunShowsMoreThanTheWindow) {
   addRun(panel, 0, 6000, 1.0 / 60.0);  // 100 s
   panel.setWindowSeconds(20.0);
   panel.refresh();
-  const int windowPoints = panel.displayedPointCount(ChartPanel::kEnergyChart, 0);
+  const int windowPoints = displayedPointCount(panel, ChartPanel::kEnergyChart, 0);
   EXPECT_NEAR(windowPoints, 20 * 60, 2);
   panel.setShowWholeRun(true);
-  EXPECT_GT(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), windowPoints);
+  EXPECT_GT(displayedPointCount(panel, ChartPanel::kEnergyChart, 0), windowPoints);
 }
 
 TEST_F(ChartPanelTest, ResetClearsSamplesPointsAndMarkers) {
@@ -605,18 +617,19 @@ TEST_F(ChartPanelTest, ResetClearsSamplesPointsAndMarkers) {
   addBaseline(panel, 300, 0.01);
   panel.addMarker(1.0, "grab");
   panel.refresh();
-  ASSERT_EQ(panel.displayedPointCount(ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun), 300);
+  ASSERT_EQ(displayedPointCount(panel, ChartPanel::kDivergenceChart, ChartPanel::kBaselineRun),
+            300);
   panel.reset({"elastic", "exact"});
   panel.refresh();
   EXPECT_EQ(panel.runCount(), 2);
-  EXPECT_EQ(panel.storedSampleCount(0), 0u);
-  EXPECT_EQ(panel.storedSampleCount(1), 0u);
-  EXPECT_EQ(panel.storedSampleCount(2), 0u);
-  EXPECT_EQ(panel.storedSampleCount(ChartPanel::kBaselineRun), 0u);
-  EXPECT_EQ(panel.markerCount(), 0);
+  EXPECT_EQ(storedSampleCount(panel, 0), 0u);
+  EXPECT_EQ(storedSampleCount(panel, 1), 0u);
+  EXPECT_EQ(storedSampleCount(panel, 2), 0u);
+  EXPECT_EQ(storedSampleCount(panel, ChartPanel::kBaselineRun), 0u);
+  EXPECT_EQ(markerCount(panel), 0);
   for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
     for (const int run : {0, 1, 2, ChartPanel::kBaselineRun})
-      EXPECT_EQ(panel.displayedPointCount(chart, run), 0) << chart << " " << run;
+      EXPECT_EQ(displayedPointCount(panel, chart, run), 0) << chart << " " << run;
   }
   // Whether the baseline is shown is a setting, not history: it stays.
   EXPECT_TRUE(panel.baselineShown());
@@ -628,15 +641,15 @@ TEST_F(ChartPanelTest, MarkersShowWhileTheirTimeIsOnTheAxis) {
   panel.addMarker(6.0, "grab");
   addRun(panel, 0, 600, 1.0 / 60.0);  // 10 s
   panel.refresh();
-  EXPECT_EQ(panel.markerCount(), 2);
-  EXPECT_EQ(panel.displayedMarkerCount(), 2);
+  EXPECT_EQ(markerCount(panel), 2);
+  EXPECT_EQ(displayedMarkerCount(panel), 2);
 
   for (int i = 600; i < 2400; ++i)
     panel.addSample(0, metricsAt(i / 60.0), {});  // 40 s
   panel.refresh();
-  EXPECT_EQ(panel.displayedMarkerCount(), 0);  // the 20 s window has scrolled past them
+  EXPECT_EQ(displayedMarkerCount(panel), 0);  // the 20 s window has scrolled past them
   panel.setShowWholeRun(true);
-  EXPECT_EQ(panel.displayedMarkerCount(), 2);
+  EXPECT_EQ(displayedMarkerCount(panel), 2);
 }
 
 TEST_F(ChartPanelTest, TogglesHideQuantitiesAndEmptyCharts) {
@@ -644,18 +657,18 @@ TEST_F(ChartPanelTest, TogglesHideQuantitiesAndEmptyCharts) {
   addRun(panel, 0, 100, 0.01);
   toggleNamed(panel, "momentumXToggle")->setChecked(false);
   toggleNamed(panel, "momentumYToggle")->setChecked(false);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kMomentumChart, 0), 100);  // |p| still shown
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kMomentumChart, 0), 100);  // |p| still shown
   toggleNamed(panel, "momentumMagnitudeToggle")->setChecked(false);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kMomentumChart, 0), 0);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), 100);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kMomentumChart, 0), 0);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 0), 100);
 
   toggleNamed(panel, "relativeResidualToggle")->setChecked(true);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kResidualChart, 0), 100);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kResidualChart, 0), 100);
   toggleNamed(panel, "residualToggle")->setChecked(false);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kResidualChart, 0), 0);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kResidualChart, 0), 0);
 
   toggleNamed(panel, "wholeRunToggle")->setChecked(true);
-  EXPECT_EQ(panel.displayedPointCount(ChartPanel::kEnergyChart, 0), 100);
+  EXPECT_EQ(displayedPointCount(panel, ChartPanel::kEnergyChart, 0), 100);
 }
 
 TEST_F(ChartPanelTest, PlotAreasLineUpSoTheirTimeAxesMatch) {
@@ -717,8 +730,8 @@ TEST_F(ChartPanelTest, CsvHoldsEveryStoredSampleAndParsesBack) {
                           "relative_energy_residual,"));
   EXPECT_TRUE(lines[0].endsWith(",rms_position_difference,max_position_difference"));
   ASSERT_EQ(static_cast<std::size_t>(lines.size() - 1),
-            panel.storedSampleCount(0) + panel.storedSampleCount(1) + panel.storedSampleCount(2) +
-                panel.storedSampleCount(ChartPanel::kBaselineRun));
+            storedSampleCount(panel, 0) + storedSampleCount(panel, 1) +
+                storedSampleCount(panel, 2) + storedSampleCount(panel, ChartPanel::kBaselineRun));
 
   constexpr int kBaselineRow = 3;
   std::array<int, 4> rowsPerRun{};
@@ -845,7 +858,7 @@ TEST_F(FourRunsAndBaseline, PngDrawsEveryRunsCurvesInItsColourWhereItsDataIs) {
   for (const TimeChart* chart : charts) {
     const std::string title = chart->valueAxisTitle().toStdString();
     const bool divergence =
-        chart->valueAxisTitle() == panel.displayedValueAxisTitle(ChartPanel::kDivergenceChart);
+        chart->valueAxisTitle() == displayedValueAxisTitle(panel, ChartPanel::kDivergenceChart);
     const QWidget* area = chart;  // the widget the file draws: twice its size
     while (area != nullptr && area->size() * 2 != image.size())
       area = area->parentWidget();

@@ -2,14 +2,108 @@
 
 #include <gtest/gtest.h>
 
+#include <QLabel>
+#include <QList>
+#include <QPen>
+#include <QPointF>
 #include <QString>
 #include <QStringList>
+#include <QTextDocument>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "chart_panel.h"
+#include "time_chart.h"
+
 namespace fooball::gui::testing {
+
+/// What a user reads off the chart panel, read back by the tests from ChartPanel's reading
+/// interface (data(), chart(), chartShown(), runLegend()). A chart index is one of
+/// ChartPanel::Chart; a run index a run's or ChartPanel::kBaselineRun; the views are as of the
+/// last refresh.
+
+inline bool validChart(int chart) {
+  return chart >= 0 && chart < ChartPanel::kChartCount;
+}
+
+/// Points the view holds for run `runIndex` in chart `chart` (the largest count over that
+/// run's shown curves).
+inline int displayedPointCount(const ChartPanel& panel, int chart, int runIndex) {
+  return validChart(chart) ? panel.chart(chart).pointCount(runIndex) : 0;
+}
+
+/// Samples stored for run `runIndex` (or the baseline while it is shown).
+inline std::size_t storedSampleCount(const ChartPanel& panel, int runIndex) {
+  const ChartData& data = panel.data();
+  if (runIndex == ChartPanel::kBaselineRun) {
+    return data.baselineShown() ? data.history(ChartData::kBaseline).storedCount() : 0;
+  }
+  if (runIndex < 0 || runIndex >= data.runCount()) return 0;
+  return data.history(runIndex).storedCount();
+}
+
+/// The points a chart plots for a run, `curve` numbering the chart's quantities as in
+/// ChartPanel::Chart; empty for a hidden chart or curve.
+inline QList<QPointF> displayedPoints(const ChartPanel& panel, int chart, int runIndex,
+                                      int curve = 0) {
+  if (!panel.chartShown(chart)) return {};
+  return panel.chart(chart).points(runIndex, curve);
+}
+
+inline QPen displayedPen(const ChartPanel& panel, int chart, int runIndex, int curve = 0) {
+  return validChart(chart) ? panel.chart(chart).pen(runIndex, curve) : QPen(Qt::NoPen);
+}
+
+/// The value axis' range.
+inline std::pair<double, double> displayedYRange(const ChartPanel& panel, int chart) {
+  return validChart(chart) ? panel.chart(chart).valueRange() : std::pair{0.0, 0.0};
+}
+
+/// `chart`'s value axis title and tick labels as drawn (TimeChart::valueTickLabels).
+inline QString displayedValueAxisTitle(const ChartPanel& panel, int chart) {
+  return validChart(chart) ? panel.chart(chart).valueAxisTitle() : QString();
+}
+
+inline QStringList displayedValueTickLabels(const ChartPanel& panel, int chart) {
+  return panel.chartShown(chart) ? panel.chart(chart).valueTickLabels() : QStringList();
+}
+
+inline bool chartShown(const ChartPanel& panel, int chart) {
+  return panel.chartShown(chart);
+}
+
+/// The run legend above the charts, as plain text (empty when it is hidden: one run).
+inline QString runLegendText(const ChartPanel& panel) {
+  if (panel.runLegend().isHidden()) return {};
+  QTextDocument document;
+  document.setHtml(panel.runLegend().text());
+  return document.toPlainText();
+}
+
+/// Markers held.
+inline int markerCount(const ChartPanel& panel) {
+  return static_cast<int>(panel.data().markers().size());
+}
+
+/// The markers' labels, oldest first.
+inline QStringList markerLabels(const ChartPanel& panel) {
+  QStringList labels;
+  for (const ChartMarker& marker : panel.data().markers())
+    labels.append(marker.label);
+  return labels;
+}
+
+/// Markers inside the time axis's current range (drawn).
+inline int displayedMarkerCount(const ChartPanel& panel) {
+  for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
+    if (panel.chartShown(chart)) return panel.chart(chart).visibleMarkerCount();
+  }
+  return 0;
+}
 
 /// The power of ten an axis title names ("residual (10⁻¹⁵ J)", "residual / |E₀| (×10³)"), as a
 /// factor: what the axis' numbers are multiplied by. 1 when it names none.

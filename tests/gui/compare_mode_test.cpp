@@ -18,6 +18,7 @@
 
 #include "chart_reading.h"
 #include "charts/chart_panel.h"
+#include "control/scene_session.h"
 #include "fooball/number_text.h"
 #include "frames/run_feed.h"
 #include "gui_fixture.h"
@@ -62,7 +63,7 @@ TEST_F(CompareMode, AddingARunRestartsEveryRunFromTheCurrentStateAndTimeCarriesO
   }
   EXPECT_EQ(runs().run(0).time(), time) << "the clock carries on";
   EXPECT_EQ(runs().run(1).time(), time);
-  EXPECT_GT(window->charts()->markerCount(), 0) << "the restart is marked on the time axis";
+  EXPECT_GT(markerCount(*window->charts()), 0) << "the restart is marked on the time axis";
   frames(30);
   EXPECT_EQ(runs().run(0).steps(), runs().run(1).steps());
   EXPECT_GT(runs().run(0).steps(), 0u);
@@ -165,7 +166,7 @@ TEST_F(CompareMode, TheReadoutFollowsRestartAndSingleStepsWhilePaused) {
   const double before = group().divergence(1).rmsPositionDifference;
   expectReadoutShows(*window->compareReadout(), runs(), "paused");
 
-  window->restart();
+  window->session().restart();
   const double restarted = group().divergence(1).rmsPositionDifference;
   ASSERT_LT(restarted, 1e-3 * before) << "at t = 0 only Box2D's float rounding differs";
   expectReadoutShows(*window->compareReadout(), runs(), "after Restart");
@@ -249,10 +250,10 @@ TEST_F(CompareMode, TheChartsPlotEveryRunsMetricsAndTheirTicksReadThem) {
   plotted.fill({HUGE_VAL, -HUGE_VAL});
   for (const PlottedQuantity& quantity : kPlotted) {
     const bool divergence = quantity.chart == ChartPanel::kDivergenceChart;
-    const double factor = titleFactor(charts.displayedValueAxisTitle(quantity.chart));
+    const double factor = titleFactor(displayedValueAxisTitle(charts, quantity.chart));
     for (int run = 0; run <= runCount; ++run) {
       const int index = run == runCount ? ChartPanel::kBaselineRun : run;
-      const QList<QPointF> points = charts.displayedPoints(quantity.chart, index, quantity.curve);
+      const QList<QPointF> points = displayedPoints(charts, quantity.chart, index, quantity.curve);
       const std::string what =
           std::string(quantity.name) + " of " +
           (run == runCount ? std::string("the baseline") : runs().label(run).toStdString());
@@ -274,8 +275,8 @@ TEST_F(CompareMode, TheChartsPlotEveryRunsMetricsAndTheirTicksReadThem) {
     }
   }
   for (int chart = 0; chart < ChartPanel::kChartCount; ++chart) {
-    expectTicksReadTheData(charts.displayedValueTickLabels(chart),
-                           charts.displayedValueAxisTitle(chart), plotted[chart].first,
+    expectTicksReadTheData(displayedValueTickLabels(charts, chart),
+                           displayedValueAxisTitle(charts, chart), plotted[chart].first,
                            plotted[chart].second, chart == ChartPanel::kDivergenceChart,
                            "chart " + std::to_string(chart));
   }
@@ -357,7 +358,7 @@ TEST_F(CompareMode, OptionsReadAsWordsAndShowTinyValuesAndWholeNumbersExactly) {
   EXPECT_TRUE(label->toolTip().contains(QStringLiteral("velocity_iterations")));
   // A whole-number option's chart marker reads as a whole number.
   iterations->setValue(12);
-  const QStringList markers = window->charts()->markerLabels();
+  const QStringList markers = markerLabels(*window->charts());
   ASSERT_FALSE(markers.empty());
   EXPECT_EQ(markers.back(), QStringLiteral("velocity_iterations = 12"));
 }
@@ -390,14 +391,14 @@ TEST_F(CompareMode, FourRunsOverlayEveryChartAndSideBySideGivesEachRunATile) {
   addRun(QStringLiteral("box2d"));
   ASSERT_EQ(runs().runCount(), 4);
   EXPECT_EQ(runs().label(2), QStringLiteral("elastic:substeps=1"));
-  EXPECT_TRUE(window->charts()->runLegendText().contains(QStringLiteral("elastic:substeps=1")))
-      << window->charts()->runLegendText().toStdString();
+  EXPECT_TRUE(runLegendText(*window->charts()).contains(QStringLiteral("elastic:substeps=1")))
+      << runLegendText(*window->charts()).toStdString();
   EXPECT_TRUE(window->windowTitle().contains(QStringLiteral("elastic:substeps=1")));
   frames(30);
   window->charts()->refresh();
   for (int run = 0; run < 4; ++run) {
-    EXPECT_GT(window->charts()->storedSampleCount(run), 5u) << "run " << run;
-    EXPECT_GT(window->charts()->displayedPointCount(ChartPanel::kEnergyChart, run), 1)
+    EXPECT_GT(storedSampleCount(*window->charts(), run), 5u) << "run " << run;
+    EXPECT_GT(displayedPointCount(*window->charts(), ChartPanel::kEnergyChart, run), 1)
         << "run " << run;
   }
   window->actions().sideBySide()->trigger();
@@ -415,21 +416,21 @@ TEST_F(CompareMode, FourRunsOverlayEveryChartAndSideBySideGivesEachRunATile) {
 TEST_F(CompareMode, AddingAndRemovingRunsKeepsTheChartHistory) {
   open(fooball::testing::gas(40));
   frames(30);
-  const std::size_t before = window->charts()->storedSampleCount(0);
+  const std::size_t before = storedSampleCount(*window->charts(), 0);
   ASSERT_GT(before, 5u);
   addRun(QStringLiteral("exact"));
   addRun(QStringLiteral("box2d"));
-  EXPECT_GE(window->charts()->storedSampleCount(0), before) << "starting compare keeps history";
+  EXPECT_GE(storedSampleCount(*window->charts(), 0), before) << "starting compare keeps history";
   frames(30);
-  const std::size_t boxSamples = window->charts()->storedSampleCount(2);
+  const std::size_t boxSamples = storedSampleCount(*window->charts(), 2);
   ASSERT_GT(boxSamples, 5u);
   QTest::mouseClick(runList()->removeButton(1), Qt::LeftButton);  // exact goes
   ASSERT_EQ(runs().runCount(), 2);
   EXPECT_EQ(runs().label(1), QStringLiteral("box2d"));
-  EXPECT_EQ(window->charts()->storedSampleCount(1), boxSamples) << "box2d's curves move up";
+  EXPECT_EQ(storedSampleCount(*window->charts(), 1), boxSamples) << "box2d's curves move up";
   QTest::mouseClick(runList()->removeButton(1), Qt::LeftButton);
   EXPECT_EQ(runs().runCount(), 1);
-  EXPECT_GE(window->charts()->storedSampleCount(0), before + 10) << "leaving keeps history";
+  EXPECT_GE(storedSampleCount(*window->charts(), 0), before + 10) << "leaving keeps history";
   frames(5);
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "host_pool.h"
@@ -83,8 +84,8 @@ TEST_F(EngineFailure, KillNineOfAHostMidRunStopsThatRunWithOneMessageAndTheOther
   ASSERT_EQ(runs().runCount(), 1);
   EXPECT_EQ(runs().label(0), QStringLiteral("elastic"));
   EXPECT_EQ(window->charts()->runCount(), 1) << "the charts keep no curve of the stopped run";
-  EXPECT_FALSE(window->charts()->runLegendText().contains(QStringLiteral("matter")))
-      << window->charts()->runLegendText().toStdString();
+  EXPECT_FALSE(runLegendText(*window->charts()).contains(QStringLiteral("matter")))
+      << runLegendText(*window->charts()).toStdString();
   EXPECT_EQ(group().ballCount(), 40u) << "the scene is kept";
   EXPECT_FALSE(runs().paused());
   const double after = group().time();

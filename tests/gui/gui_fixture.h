@@ -17,6 +17,7 @@
 #include "test_scenes.h"
 #include "view/simulation_view.h"
 #include "view/view_transform.h"
+#include "widgets/user_messages.h"
 #include "window/main_window.h"
 
 namespace fooball::gui::testing {
@@ -38,7 +39,7 @@ class GuiTest : public ::testing::Test {
       options.runs.push_back(parseRunSpec(spec));
     options.rememberSettings = false;
     window = std::make_unique<MainWindow>(options);
-    window->setErrorReporter(
+    window->messages().setErrorReporter(
         [this](const QString&, const QString& message) { errors.append(message); });
     // Every step waited for, as in a headless run, so a test does the same on any machine,
     // however loaded; slow_step_test.cpp tests the steps left to run in the background.

@@ -23,13 +23,14 @@
 #include <string>
 
 #include "backend_profiles.h"
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
+#include "control/scene_commands.h"
 #include "gui_fixture.h"
 #include "robustness/case_run.h"
 #include "sidebar/run_list_editor.h"
 #include "sidebar/settings_sidebar.h"
 #include "widgets/log_slider.h"
-#include "window/scene_commands.h"
 #include "window/window_actions.h"
 
 namespace fooball::gui::testing {
@@ -66,7 +67,7 @@ class GuiMonkey : public GuiTest {
  protected:
   void SetUp() override {
     open(fooball::testing::emptyBox());
-    openPreset(*window, QStringLiteral("default"));
+    window->scenes().openPreset(QStringLiteral("default"));
     sidebar_ = window->sidebar();
     for (QAction* action : window->findChildren<QAction*>()) {
       if (action->shortcut() == QKeySequence(Qt::Key_Space)) pause_ = action;
@@ -322,8 +323,8 @@ class GuiMonkey : public GuiTest {
     runs().setStepPatience(stepPatience_);
     window->charts()->refresh();
     for (int run = 0; run < runs().runCount(); ++run) {
-      EXPECT_GT(window->charts()->storedSampleCount(run), 0u);
-      EXPECT_GT(window->charts()->displayedPointCount(ChartPanel::kEnergyChart, run), 0)
+      EXPECT_GT(storedSampleCount(*window->charts(), run), 0u);
+      EXPECT_GT(displayedPointCount(*window->charts(), ChartPanel::kEnergyChart, run), 0)
           << "E_kin " << runs().run(run).metrics().sums.kineticEnergy << " E_pot "
           << runs().run(run).metrics().sums.potentialEnergy;
     }

@@ -7,7 +7,9 @@
 #include <QComboBox>
 #include <QRegularExpression>
 
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
+#include "control/scene_session.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
 #include "readouts/run_counters.h"
@@ -29,7 +31,7 @@ class PresetCaption : public GuiTest {
     ASSERT_GE(index, 0) << name.toStdString();
     box->setCurrentIndex(index);
     emit box->activated(index);
-    ASSERT_EQ(window->presetName(), name);
+    ASSERT_EQ(window->session().presetName(), name);
   }
 
   std::vector<Caption> captionsOf(Caption::Kind kind) const {
@@ -105,12 +107,12 @@ TEST_F(PresetCaption, ShowsThePresetsTextAndHidesAndShowsAgain) {
   EXPECT_FALSE(lookFor.front().rect.intersects(boxWithCaption.adjusted(-1, -1, 1, 1)));
 
   // The close button hides it (and is no mouse tool press); the box takes the room.
-  const int markers = window->charts()->markerCount();
+  const int markers = markerCount(*window->charts());
   QTest::mouseClick(view(), Qt::LeftButton, {}, view()->lookForCloseButton().center());
   EXPECT_TRUE(captionsOf(Caption::Kind::LookFor).empty());
   EXPECT_FALSE(window->actions().lookFor()->isChecked());
   EXPECT_FALSE(group().interactions().pressed());
-  EXPECT_EQ(window->charts()->markerCount(), markers);
+  EXPECT_EQ(markerCount(*window->charts()), markers);
   EXPECT_GT(view()->transformForRun(0).boxRect().height(), boxWithCaption.height());
   EXPECT_TRUE(view()->lookForCloseButton().isEmpty());
 
@@ -123,7 +125,7 @@ TEST_F(PresetCaption, ShowsThePresetsTextAndHidesAndShowsAgain) {
   EXPECT_EQ(lookFor.front().text, fromView(findPreset("rain")->lookFor));
 
   // A scene from a file has none.
-  window->loadScene(stillBalls(), QString(), QStringLiteral("still.json"));
+  window->session().loadScene(stillBalls(), QString(), QStringLiteral("still.json"));
   EXPECT_TRUE(captionsOf(Caption::Kind::LookFor).empty());
 }
 
@@ -157,13 +159,13 @@ TEST_F(PresetCaption, WallBoxesShowThreeWallsAndToggleOne) {
   wallBox("bottomWallBox")->click();
   EXPECT_EQ(group().world().walls, (Walls{true, false, false, true}));
   EXPECT_EQ(runs().run(0).world().walls, (Walls{true, false, false, true}));
-  EXPECT_EQ(window->charts()->markerLabels().back(), QStringLiteral("bottom wall off"));
+  EXPECT_EQ(markerLabels(*window->charts()).back(), QStringLiteral("bottom wall off"));
   wallBox("rightWallBox")->click();
   EXPECT_EQ(group().world().walls, (Walls{true, true, false, true}));
-  EXPECT_EQ(window->charts()->markerLabels().back(), QStringLiteral("right wall on"));
+  EXPECT_EQ(markerLabels(*window->charts()).back(), QStringLiteral("right wall on"));
 
   // Reset scene brings back the scene's own walls, and the boxes follow.
-  window->resetScene();
+  window->session().resetScene();
   EXPECT_EQ(group().world().walls, (Walls{true, false, true, true}));
   EXPECT_FALSE(wallBox("rightWallBox")->isChecked());
   EXPECT_TRUE(wallBox("bottomWallBox")->isChecked());

@@ -21,7 +21,6 @@
 #include "gui_fixture.h"
 #include "recording/record_dialog.h"
 #include "recording/recording_session.h"
-#include "window/recording_target.h"
 #include "window/window_actions.h"
 
 namespace fooball::gui {
@@ -196,8 +195,8 @@ TEST_F(Recording, EveryFrameHoldsOneFrameTimesTheSpeedOfSimulatedTime) {
   open(testing::stillBalls());
   window->frames().setTimeScale(0.5);
   const double start = group().time();
-  RecordingSession session(recordingTargetOf(*window), {folder.filePath(QStringLiteral("slow.mp4")),
-                                                        RecordArea::Box, QSize(320, 180), 60});
+  RecordingSession session(window->recordingTarget(), {folder.filePath(QStringLiteral("slow.mp4")),
+                                                       RecordArea::Box, QSize(320, 180), 60});
   // 12 frames at 60 frames/s and 0.5×: 0.1 s of simulation, 6 steps of 1/60 s, however long
   // each frame takes.
   for (int i = 0; i < 12; ++i)

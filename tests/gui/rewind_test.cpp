@@ -4,6 +4,7 @@
 
 #include <QSlider>
 
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "readouts/timeline_bar.h"
@@ -24,7 +25,7 @@ class RewindInWindow : public GuiTest {
   /// s, the time of the last sample run 0's charts plot (after a refresh).
   double lastChartTime() const {
     window->charts()->refresh();
-    const QList<QPointF> points = window->charts()->displayedPoints(0, 0);
+    const QList<QPointF> points = displayedPoints(*window->charts(), 0, 0);
     return points.isEmpty() ? -1.0 : points.back().x();
   }
 };

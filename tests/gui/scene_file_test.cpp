@@ -5,9 +5,9 @@
 #include <QTemporaryDir>
 #include <vector>
 
+#include "control/scene_commands.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
-#include "window/scene_commands.h"
 
 namespace fooball::gui::testing {
 namespace {
@@ -31,7 +31,7 @@ TEST_F(SceneFiles, BrokenSceneFileLeavesTheSceneUnchanged) {
   const double time = mainRun().time();
   const QString path =
       write(QStringLiteral("broken.json"), R"({"format": "fooball-scene", "version": 1, "box": )");
-  EXPECT_FALSE(openSceneFile(*window, path));
+  EXPECT_FALSE(window->scenes().openSceneFile(path));
   ASSERT_EQ(errors.size(), 1);
   EXPECT_TRUE(errors.front().contains(QStringLiteral("broken.json")))
       << "the error names the file: " << errors.front().toStdString();
@@ -47,7 +47,7 @@ TEST_F(SceneFiles, InvalidBallIsReportedWithItsPlace) {
       write(QStringLiteral("negative.json"),
             R"({"format": "fooball-scene", "version": 1, "box": {"width": 4, "height": 3},
           "balls": [{"position": [1, 1], "radius": -1}]})");
-  EXPECT_FALSE(openSceneFile(*window, path));
+  EXPECT_FALSE(window->scenes().openSceneFile(path));
   ASSERT_EQ(errors.size(), 1);
   EXPECT_TRUE(errors.front().contains(QStringLiteral("radius"))) << errors.front().toStdString();
   EXPECT_EQ(mainRun().ballCount(), 3u);
@@ -55,7 +55,7 @@ TEST_F(SceneFiles, InvalidBallIsReportedWithItsPlace) {
 
 TEST_F(SceneFiles, MissingFileIsReported) {
   open(stillBalls());
-  EXPECT_FALSE(openSceneFile(*window, directory.filePath(QStringLiteral("nothing.json"))));
+  EXPECT_FALSE(window->scenes().openSceneFile(directory.filePath(QStringLiteral("nothing.json"))));
   EXPECT_EQ(errors.size(), 1);
   EXPECT_EQ(mainRun().ballCount(), 3u);
 }
@@ -64,10 +64,10 @@ TEST_F(SceneFiles, SavedSceneOpensAgainWithTheSameBalls) {
   open(fooball::testing::gas(25));
   frames(10);
   const QString path = directory.filePath(QStringLiteral("saved.json"));
-  ASSERT_TRUE(saveSceneFile(*window, path));
+  ASSERT_TRUE(window->scenes().saveSceneFile(path));
   const Scene saved = mainRun().scene();
   frames(10);
-  ASSERT_TRUE(openSceneFile(*window, path));
+  ASSERT_TRUE(window->scenes().openSceneFile(path));
   EXPECT_TRUE(errors.isEmpty());
   EXPECT_EQ(mainRun().time(), 0.0);
   ASSERT_EQ(mainRun().ballCount(), saved.balls.size());
@@ -79,7 +79,7 @@ TEST_F(SceneFiles, SavedRainStateRecordsItsRunAndOpensAgainExactly) {
   open(loadPreset("rain"));
   frames(150);  // 2.5 s: a pile on the floor
   const QString path = directory.filePath(QStringLiteral("rain.json"));
-  ASSERT_TRUE(saveSceneFile(*window, path));
+  ASSERT_TRUE(window->scenes().saveSceneFile(path));
   const Scene shown = mainRun().scene();
   const double time = mainRun().time();
 
@@ -97,7 +97,8 @@ TEST_F(SceneFiles, SavedRainStateRecordsItsRunAndOpensAgainExactly) {
   }
 
   frames(10);
-  ASSERT_TRUE(openSceneFile(*window, path)) << errors.join(QStringLiteral("\n")).toStdString();
+  ASSERT_TRUE(window->scenes().openSceneFile(path))
+      << errors.join(QStringLiteral("\n")).toStdString();
   EXPECT_TRUE(errors.isEmpty());
   EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("saved from")))
       << window->statusBar()->currentMessage().toStdString();
@@ -119,7 +120,7 @@ TEST_F(SceneFiles, SavedStateBeyondTheHandWrittenRulesOpensWithAWarningNotAnErro
                               R"({"format": "fooball-scene", "version": 1,
       "saved_from": {"backend": "elastic", "options": {}, "time": 12.5}, )" +
                                   balls);
-  ASSERT_TRUE(openSceneFile(*window, saved));
+  ASSERT_TRUE(window->scenes().openSceneFile(saved));
   EXPECT_TRUE(errors.isEmpty()) << errors.join(QStringLiteral("\n")).toStdString();
   const QString status = window->statusBar()->currentMessage();
   EXPECT_TRUE(status.contains(QStringLiteral(
@@ -133,7 +134,7 @@ TEST_F(SceneFiles, SavedStateBeyondTheHandWrittenRulesOpensWithAWarningNotAnErro
   // The same balls written by hand are refused, and the scene stays.
   const QString handWritten =
       write(QStringLiteral("hand.json"), R"({"format": "fooball-scene", "version": 1, )" + balls);
-  EXPECT_FALSE(openSceneFile(*window, handWritten));
+  EXPECT_FALSE(window->scenes().openSceneFile(handWritten));
   ASSERT_EQ(errors.size(), 1);
   EXPECT_TRUE(errors.front().contains(QStringLiteral("overlaps balls[0]")))
       << errors.front().toStdString();

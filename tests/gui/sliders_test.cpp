@@ -1,6 +1,7 @@
 #include <QCheckBox>
 #include <QSlider>
 
+#include "chart_reading.h"
 #include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "sidebar/settings_sidebar.h"
@@ -33,19 +34,19 @@ TEST_F(Sliders, GravitySliderSetsWorldGravityDownwards) {
 TEST_F(Sliders, OneDragIsOneMarkerShowingTheFinalValue) {
   open(stillBalls());
   LogSlider* gravity = window->sidebar()->gravitySlider();
-  const int before = window->charts()->markerCount();
+  const int before = markerCount(*window->charts());
   // A drag sends a value every few milliseconds.
   for (int position = 100; position <= 400; position += 10)
     move(gravity, position);
-  ASSERT_EQ(window->charts()->markerCount(), before + 1) << "one gesture, one marker";
-  const QString label = window->charts()->markerLabels().back();
+  ASSERT_EQ(markerCount(*window->charts()), before + 1) << "one gesture, one marker";
+  const QString label = markerLabels(*window->charts()).back();
   EXPECT_TRUE(label.contains(formatNumber(gravity->value()))) << label.toStdString();
   // A change seconds later is a gesture of its own; another setting is one anyway.
   QTest::qWait(800);
   move(gravity, 450);
-  EXPECT_EQ(window->charts()->markerCount(), before + 2);
+  EXPECT_EQ(markerCount(*window->charts()), before + 2);
   move(window->sidebar()->airResistanceSlider(), 300);
-  EXPECT_EQ(window->charts()->markerCount(), before + 3);
+  EXPECT_EQ(markerCount(*window->charts()), before + 3);
 }
 
 TEST_F(Sliders, GravitySliderLeftEndIsExactlyZero) {

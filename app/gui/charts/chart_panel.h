@@ -1,36 +1,26 @@
 #pragma once
 
 #include <QColor>
-#include <QList>
-#include <QPen>
-#include <QPointF>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
 #include <array>
 #include <cstddef>
-#include <utility>
 #include <vector>
 
 #include "chart_data.h"
 #include "fooball/divergence.h"
 #include "fooball/metrics.h"
 
-class QAction;
-class QDoubleSpinBox;
 class QLabel;
-class QGridLayout;
 class QScrollArea;
 class QTimer;
-class QToolBar;
 
 namespace fooball::gui {
 
+class ChartGrid;
+class ChartToolBar;
 class TimeChart;
-
-/// How many columns `charts` charts get in `area` (px): each as large as it can be at about
-/// 2.4 : 1, none narrower than 240 px beside another.
-int chartColumns(int charts, QSize area);
 
 /// The live charts against simulated time: momentum, energy and the energy budget's residual
 /// of every run overlaid (1 to 8, as in the run group), each run in its colour in compare mode,
@@ -104,39 +94,21 @@ class ChartPanel : public QWidget {
   /// chaos baseline). False when the file was not written.
   bool exportPng(const QString& path, const QString& caption = {}) const;
   bool exportCsv(const QString& path) const;
-  /// For tests: points the view currently holds for `runIndex` (or kBaselineRun) in chart
-  /// `chart` (after a refresh; the largest count over that run's shown curves), and samples
-  /// stored.
-  int displayedPointCount(int chart, int runIndex) const;
-  std::size_t storedSampleCount(int runIndex) const;
-  /// For tests: the points a chart plots for a run (after a refresh), `curve` numbering the
-  /// chart's quantities as in Chart; empty for a hidden chart or curve. Their pen, and the
-  /// value axis' range.
-  QList<QPointF> displayedPoints(int chart, int runIndex, int curve = 0) const;
-  QPen displayedPen(int chart, int runIndex, int curve = 0) const;
-  std::pair<double, double> displayedYRange(int chart) const;
-  /// `chart`'s value axis title and tick labels as drawn (TimeChart::valueTickLabels).
-  QString displayedValueAxisTitle(int chart) const;
-  QStringList displayedValueTickLabels(int chart) const;
-  /// Whether `chart` is on screen: it has something to show and its toggles are on.
+  /// For tests (tests/gui/chart_reading.h): the samples and markers held, chart `chart` (one of
+  /// Chart) as drawn, whether it is on screen (it has something to show and its toggles are
+  /// on), and the run legend above the charts (hidden for one run).
+  const ChartData& data() const { return data_; }
+  const TimeChart& chart(int chart) const { return *charts_.at(std::size_t(chart)); }
   bool chartShown(int chart) const;
-  /// The run legend above the charts, as plain text (empty when it is hidden: one run).
-  QString runLegendText() const;
-  /// Markers held, and those inside the time axis's current range (drawn, after a refresh).
-  int markerCount() const;
-  /// The markers' labels, oldest first.
-  QStringList markerLabels() const;
-  int displayedMarkerCount() const;
+  const QLabel& runLegend() const { return *runLegend_; }
   /// Redraws now (the timer calls it; tests call it directly).
   void refresh();
 
  private:
-  QToolBar* createToolBar();
   /// Every chart's curves and the run legend follow the runs and the baseline.
   void rebuildCurves();
   bool isChartShown(const TimeChart* chart) const;
-  QAction* addQuantityToggle(QToolBar* toolBar, const QString& text, const QString& toolTip,
-                             const QString& objectName);
+  std::vector<TimeChart*> shownCharts() const;
   /// Shows and hides curves and charts as the toggles say.
   void applyToggles();
   /// Puts the charts shown into the grid, in as many columns as suit the panel's shape.
@@ -150,24 +122,10 @@ class ChartPanel : public QWidget {
   std::array<TimeChart*, kChartCount> charts_{};
   QWidget* chartArea_ = nullptr;  ///< the run legend and the charts: what exportPng draws
   QLabel* runLegend_ = nullptr;
-  QWidget* chartGrid_ = nullptr;
-  QGridLayout* gridLayout_ = nullptr;
+  ChartGrid* chartGrid_ = nullptr;
   QScrollArea* scroll_ = nullptr;
-  std::array<bool, kChartCount> chartsShown_{};
-  int gridColumns_ = 0;                 ///< as last arranged, to see when that changes
-  std::vector<TimeChart*> gridCharts_;  ///< the charts in the grid, in order
 
-  QAction* wholeRunToggle_ = nullptr;
-  QDoubleSpinBox* windowSpin_ = nullptr;  ///< s, the scrolling window's length
-  QAction* momentumXToggle_ = nullptr;
-  QAction* momentumYToggle_ = nullptr;
-  QAction* momentumMagnitudeToggle_ = nullptr;
-  QAction* kineticToggle_ = nullptr;
-  QAction* potentialToggle_ = nullptr;
-  QAction* totalToggle_ = nullptr;
-  QAction* residualToggle_ = nullptr;
-  QAction* relativeResidualToggle_ = nullptr;
-  QAction* divergenceToggle_ = nullptr;
+  ChartToolBar* toolBar_ = nullptr;
 
   QTimer* refreshTimer_ = nullptr;
   /// The view is a cache of data_: redrawing it changes nothing the panel holds, so a const

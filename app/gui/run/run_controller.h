@@ -51,6 +51,13 @@ class RunController : public QObject {
     settle();
     apply(group_);
   }
+  /// The world settings of every run, as `edit` adjusts a copy of today's (as change()).
+  template <class Edit>
+  void changeWorld(Edit&& edit) {
+    WorldSettings world = group_.world();
+    edit(world);
+    change([&](RunGroup& group) { group.setWorld(world); });
+  }
   /// A change of the mouse tools (mode, scope, strength, presses, attractors), which the next
   /// step reads: a step in flight carries on. Signals nothing.
   template <class Change>

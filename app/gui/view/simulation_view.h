@@ -31,7 +31,8 @@ enum class CompareLayout {
 
 /// The black box of balls, painted from the runs' current state, and the mouse tools on it.
 /// Balls are rasterised into an image (DiscRasterizer); tethers, vectors and labels are
-/// painted on top with QPainter.
+/// painted on top with QPainter (view_painting.cpp). The captions' layout, which also places the
+/// boxes, is in view_captions.cpp; which box, point and ball a pixel is, in view_hit_testing.cpp.
 class SimulationView : public QWidget {
   Q_OBJECT
 

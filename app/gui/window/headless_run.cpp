@@ -17,7 +17,6 @@
 #include "run/run_controller.h"
 #include "view/simulation_view.h"
 #include "window/main_window.h"
-#include "window/recording_target.h"
 
 namespace fooball::gui {
 
@@ -49,7 +48,7 @@ void showOnlyRecordedArea(MainWindow& window, RecordArea area, QSize size) {
   window.show();
   QApplication::processEvents();
   for (int attempt = 0; attempt < 4; ++attempt) {
-    const QSize shown = RecordingFrameSource::shownSize(recordingTargetOf(window), area);
+    const QSize shown = RecordingFrameSource::shownSize(window.recordingTarget(), area);
     if (shown == size) break;
     window.resize(window.size() + (size - shown));
     QApplication::processEvents();
@@ -70,7 +69,7 @@ int recordHeadless(MainWindow& window, const RecordingSettings& settings, int fr
   showOnlyRecordedArea(window, settings.area, settings.size);
   std::optional<RecordingSession> session;
   try {
-    session.emplace(recordingTargetOf(window), settings);
+    session.emplace(window.recordingTarget(), settings);
   } catch (const video::VideoError& error) {
     std::cerr << "fooball: error: " << error.what() << '\n';
     return 1;

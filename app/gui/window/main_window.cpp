@@ -3,20 +3,19 @@
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QMessageBox>
 #include <QResizeEvent>
-#include <QScrollArea>
-#include <QScrollBar>
 #include <QShowEvent>
 #include <QStatusBar>
-#include <QTimer>
 #include <QUndoStack>
 #include <QVBoxLayout>
-#include <algorithm>
-#include <cmath>
 
 #include "charts/chart_panel.h"
-#include "fooball/presets.h"
+#include "control/ball_commands.h"
+#include "control/mouse_tools.h"
+#include "control/run_events.h"
+#include "control/scene_commands.h"
+#include "control/scene_session.h"
+#include "control/sidebar_controller.h"
 #include "frames/frame_loop.h"
 #include "frames/run_feed.h"
 #include "readouts/compare_readout.h"
@@ -25,44 +24,27 @@
 #include "readouts/timeline_bar.h"
 #include "run/run_controller.h"
 #include "sidebar/ball_inspector.h"
-#include "sidebar/run_list_editor.h"
 #include "sidebar/settings_sidebar.h"
 #include "view/simulation_view.h"
+#include "widgets/fitted_scroll_area.h"
 #include "widgets/number_field_keys.h"
-#include "window/sidebar_wiring.h"
+#include "widgets/user_messages.h"
+#include "window/dock_layout.h"
 #include "window/window_actions.h"
-#include "window/window_settings.h"
 
 namespace fooball::gui {
 
 namespace {
 
-constexpr int kStatusMessageMs = 8000;
-constexpr int kSidebarWidth = 300;        // px
 constexpr QSize kDefaultSize{1440, 900};  // px, before it is fitted to the screen
-/// The charts' first height: a quarter of the window's, and 30 px more from a window 900 px tall
-/// on, where that gives one row of charts its full height (title, legend, plot, time axis)
-/// without scrolling. At 16:9 the box stays the largest thing on screen from 1000×650 to
-/// 3840×2160, in compare mode too (layout_test.cpp).
-int firstChartsHeight(int windowHeight) {
-  constexpr double kShare = 0.25;
-  constexpr int kExtra = 30;  // px
-  return int(kShare * windowHeight) + std::clamp(windowHeight - 650, 0, 250) * kExtra / 250;
-}
 
 }  // namespace
 
 MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
     : QMainWindow(parent),
       runs_(std::make_unique<RunController>(options.scene, options.runs)),
-      rememberSettings_(options.rememberSettings),
-      presetName_(options.presetName),
-      sourceName_(options.sourceName) {
+      rememberSettings_(options.rememberSettings) {
   setObjectName(QStringLiteral("mainWindow"));
-  reportError_ = [this](const QString& title, const QString& message) {
-    QMessageBox::warning(this, title, message);
-  };
-
   view_ = new SimulationView(*runs_);
   compareReadout_ = new CompareReadout;
   auto* central = new QWidget;
@@ -75,22 +57,33 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
 
   createDocks();
   defaultLayout_ = saveState();
-  undoStack_ = new QUndoStack(this);
+  auto* undoStack = new QUndoStack(this);
   feed_ = std::make_unique<RunFeed>(
       *runs_, RunFeed::Targets{*charts_, *compareReadout_, *sidebar_, *sidebarDock_, *statistics_});
   frames_ = new FrameLoop(*runs_, *view_, *feed_, this);
-  actions_ = new WindowActions(*this);
+  messages_ = new UserMessages(*statusBar(), *this);
+  session_ = new SceneSession({*runs_, *view_, *sidebar_, *feed_, *frames_, *undoStack},
+                              options.presetName, options.sourceName, this);
+  scenes_ = std::make_unique<SceneCommands>(
+      SceneCommands::Parts{*session_, *runs_, *sidebar_, *feed_, *undoStack, *messages_});
+  balls_ = std::make_unique<BallCommands>(
+      BallCommands::Parts{*runs_, *feed_, *undoStack, *sidebar_->inspector(), *messages_});
+  actions_ = new WindowActions({*this, *runs_, *view_, *sidebar_, *charts_, *feed_, *session_,
+                                *scenes_, *balls_, *undoStack, *messages_, *sidebarDock_,
+                                *chartsDock_, *statisticsDock_, recordingTarget()});
   new NumberFieldKeys(*this, *view_);  // Space and '.' reach the actions from a number field
   status_ = new StatusPanel(*statusBar(), *runs_, frames_->frameRate());
   // In the status bar's stretch, not under the box: the box keeps every pixel of height.
   timeline_ = new TimelineBar(*runs_);
   statusBar()->addWidget(timeline_, 1);
-  wireSidebar(*this);
-  wireView(*this);
-  connectRuns();
+  new SidebarController(
+      {*sidebar_, *runs_, *session_, *scenes_, *balls_, *feed_, *frames_, *view_, *messages_},
+      this);
+  new MouseTools({*view_, *runs_, *feed_, *sidebar_, *status_, *messages_}, this);
+  connectParts();
 
   resize(kDefaultSize);
-  if (rememberSettings_) docksSized_ = readWindowSettings(*this);
+  if (rememberSettings_) docksSized_ = readWindowSettings(remembered());
   if (options.balls) runs_->setBallCount(*options.balls);
   // Compare mode shows the chaos baseline unless the user hides it.
   if (options.runs.size() > 1) runs_->setBaseline(true);
@@ -98,9 +91,8 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
     runs_->changeTools([&](RunGroup& group) { group.addAttractor(point); });
   actions_->applyShowOptions(options.show);
 
-  view_->setPreset(findPreset(presetName_.toStdString()));
-  syncSidebar();
-  resetCharts();
+  session_->syncSidebar();
+  session_->restartCharts();
   updateTitle();
   updateStatusBar();
 }
@@ -117,12 +109,8 @@ MainWindow::~MainWindow() {
 
 void MainWindow::createDocks() {
   sidebar_ = new SettingsSidebar;
-  sidebarScroll_ = new QScrollArea;
-  sidebarScroll_->setWidget(sidebar_);
-  sidebarScroll_->setWidgetResizable(true);
-  sidebarScroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  fitSidebarWidth();
-  sidebar_->installEventFilter(this);
+  // As narrow as the sidebar's controls allow, so the box keeps the room at 1000 px wide.
+  sidebarScroll_ = new FittedScrollArea(sidebar_);
   sidebarDock_ = new QDockWidget(tr("Settings"), this);
   sidebarDock_->setObjectName(QStringLiteral("settingsDock"));
   sidebarDock_->setWidget(sidebarScroll_);
@@ -145,20 +133,7 @@ void MainWindow::createDocks() {
   statisticsDock_->setWidget(statistics_);
   addDockWidget(Qt::BottomDockWidgetArea, statisticsDock_);
   statisticsDock_->hide();
-  // Tabbed when opened, not before: a saved layout with a tab group holding a closed dock comes
-  // back wider than the window's least width (868 px against 505 on an 800 px test screen).
-  // Where the user has moved it, it stays.
-  connect(statisticsDock_->toggleViewAction(), &QAction::toggled, this, [this](bool open) {
-    if (!open) return;
-    if (dockWidgetArea(statisticsDock_) == Qt::BottomDockWidgetArea &&
-        !statisticsDock_->isFloating() && !chartsDock_->isHidden() &&
-        !tabifiedDockWidgets(statisticsDock_).contains(chartsDock_)) {
-      tabifyDockWidget(chartsDock_, statisticsDock_);
-    }
-    // To the front of its tabs once the layout has run: before, a dock just shown or in a window
-    // not shown yet has no tab to raise.
-    QTimer::singleShot(0, statisticsDock_, &QDockWidget::raise);
-  });
+  tabWithChartsWhenOpened(*this, *statisticsDock_, *chartsDock_);
   // Shown, or brought to the front of its tabs: measure at once rather than at the next refresh.
   connect(statisticsDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
     if (visible) {
@@ -168,140 +143,25 @@ void MainWindow::createDocks() {
   });
 }
 
-void MainWindow::connectRuns() {
-  connect(runs_.get(), &RunController::pausedChanged, this, [this](bool paused) {
-    actions_->showPaused(paused);
-    timeline_->showHistory();
-    frames_->restartClock();
-    view_->update();
-    // The readouts show the state paused on, not the one of their last refresh, frames before.
-    if (paused) {
-      feed_->showReadouts();
-      feed_->showSelectedBall();
-    }
+void MainWindow::connectParts() {
+  new RunEvents({*runs_, *feed_, *view_, *sidebar_, *frames_, *session_, *messages_}, this);
+  RunController* runs = runs_.get();
+  connect(runs, &RunController::pausedChanged, actions_, &WindowActions::showPaused);
+  connect(runs, &RunController::pausedChanged, timeline_, &TimelineBar::showHistory);
+  connect(runs, &RunController::selectionChanged, this, [this](std::optional<std::size_t> index) {
+    actions_->deleteBall()->setEnabled(index.has_value());
+    if (index) sidebarScroll_->ensureWidgetVisible(sidebar_->inspector());
   });
-  connect(runs_.get(), &RunController::selectionChanged, this,
-          [this](std::optional<std::size_t> index) {
-            actions_->deleteBall()->setEnabled(index.has_value());
-            feed_->showSelectedBall();
-            if (index) sidebarScroll_->ensureWidgetVisible(sidebar_->inspector());
-            view_->update();
-          });
-  connect(runs_.get(), &RunController::ballsChanged, this, [this] {
-    sidebar_->showBallCount(runs_->group().ballCount());
-    feed_->showSelectedBall();
-    feed_->showReadouts();
-    view_->update();
-  });
-  connect(runs_.get(), &RunController::runsChanged, this, [this] {
-    showRuns();
+  const auto showRunNames = [this] {
     updateTitle();
     updateStatusBar();
-    view_->update();
-  });
-  connect(runs_.get(), &RunController::optionsChanged, this, [this](int index) {
-    feed_->renameRun(index);
-    feed_->showLabels();
-    updateTitle();
-    updateStatusBar();
-  });
-  connect(runs_.get(), &RunController::rewound, this, [this](double time) {
-    feed_->dropAfter(time);  // the charts end where the runs are now
-    feed_->showReadouts();
-    feed_->showSelectedBall();
-    updateStatusBar();
-    view_->update();
-  });
-  connect(runs_.get(), &RunController::runsFailed, this,
-          [this](const QString&, const QList<int>& removed) {
-            for (const int index : removed)
-              feed_->removeRun(index);
-            feed_->markAt(runs_->group().time(), tr("a run stopped"));
-          });
-  // Queued: the message box's own event loop must not run inside the frame that collected the
-  // failed step.
-  connect(
-      runs_.get(), &RunController::runsFailed, this,
-      [this](const QString& lines) { reportError_(tr("A run stopped"), lines); },
-      Qt::QueuedConnection);
-  connect(runs_.get(), &RunController::runsRestarted, this, [this](double time) {
-    feed_->markAt(time, tr("runs restarted identical"));
-    showStatus(tr("Every run restarted from run 0's state at t = %1 s, so that all start "
-                  "identical; the charts keep their history")
-                   .arg(time, 0, 'f', 2));
-  });
-}
-
-void MainWindow::fitSidebarWidth() {
-  // As narrow as the sidebar's controls allow, so the box keeps the room at 1000 px wide; and
-  // never narrower, or the rightmost column (the counters', a run's remove button) is cut off.
-  // Its controls change with the runs, so this follows them (eventFilter).
-  sidebarScroll_->setMinimumWidth(sidebar_->minimumSizeHint().width() +
-                                  sidebarScroll_->verticalScrollBar()->sizeHint().width() +
-                                  2 * sidebarScroll_->frameWidth());
-}
-
-bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-  // The sidebar's rows change with the runs and their options, laid out in a posted event.
-  if (watched == sidebar_ && event->type() == QEvent::LayoutRequest) fitSidebarWidth();
-  return QMainWindow::eventFilter(watched, event);
-}
-
-void MainWindow::showRuns() {
-  sidebar_->runList()->showRuns(runs_->group());
-  feed_->showRuns();
-}
-
-void MainWindow::syncSidebar() {
-  const RunGroup& group = runs_->group();
-  sidebar_->showSceneSource(presetName_, sourceName_);
-  sidebar_->showBallCount(group.ballCount());
-  sidebar_->showWorld(group.world());
-  sidebar_->showStrength(group.interactions().strength);
-  sidebar_->showTimeScale(frames_->timeScale());
-  sidebar_->showMouseMode(group.interactions().mode);
-  sidebar_->showScope(group.interactions().scope);
-  sidebar_->showAttractorCount(group.interactions().attractors().size());
-  sidebar_->showDrawing(view_->temperatureColouring(), view_->tethers(), view_->velocityVectors(),
-                        view_->centreOfMass());
-  sidebar_->runList()->showCompareLayout(view_->compareLayout());
-  showRuns();
-  feed_->showSelectedBall();
-}
-
-void MainWindow::resetCharts() {
-  frames_->restartSampling();
-  feed_->restart();
-}
-
-void MainWindow::showStatus(const QString& message) {
-  statusBar()->showMessage(message, kStatusMessageMs);
-}
-
-void MainWindow::loadScene(const Scene& scene, const QString& presetName,
-                           const QString& sourceName) {
-  presetName_ = presetName;
-  sourceName_ = sourceName;
-  runs_->loadScene(scene);
-  view_->setPreset(findPreset(presetName_.toStdString()));
-  undoStack_->clear();  // other balls (undoStack())
-  syncSidebar();
-  resetCharts();
-  updateTitle();
-}
-
-void MainWindow::restart() {
-  runs_->restart();
-  undoStack_->clear();  // the balls as loaded (undoStack())
-  resetCharts();
-}
-
-void MainWindow::resetScene() {
-  runs_->loadScene(runs_->group().loadedScene());
-  undoStack_->clear();  // the balls as loaded (undoStack())
-  resetSliders(*this);
-  syncSidebar();
-  resetCharts();
+  };
+  connect(runs, &RunController::runsChanged, this, showRunNames);
+  connect(runs, &RunController::optionsChanged, this, showRunNames);
+  connect(runs, &RunController::rewound, this, &MainWindow::updateStatusBar);
+  connect(session_, &SceneSession::sceneLoaded, this, &MainWindow::updateTitle);
+  connect(actions_, &WindowActions::stepped, this, &MainWindow::updateStatusBar);
+  connect(actions_, &WindowActions::resetLayoutRequested, this, &MainWindow::resetLayout);
 }
 
 void MainWindow::advanceFrame(double elapsedSeconds) {
@@ -320,7 +180,15 @@ void MainWindow::updateStatusBar() {
 
 void MainWindow::updateTitle() {
   // Qt adds the application's display name, "FooBall", after it.
-  setWindowTitle(tr("%1 — %2").arg(sourceName_, runs_->labels().join(tr(" vs "))));
+  setWindowTitle(tr("%1 — %2").arg(session_->sourceName(), runs_->labels().join(tr(" vs "))));
+}
+
+RecordingTarget MainWindow::recordingTarget() const {
+  return {*view_, *charts_, *chartsDock_, *frames_, *runs_};
+}
+
+RememberedParts MainWindow::remembered() {
+  return {*this, *actions_, *view_, *runs_, *frames_, *session_};
 }
 
 void MainWindow::resetLayout() {
@@ -331,38 +199,13 @@ void MainWindow::resetLayout() {
   restoreState(defaultLayout_);
   resize(kDefaultSize);
   keepFullyOnScreen(*this);
-  sizeDocks();
-}
-
-void MainWindow::sizeDocks() {
-  // Once the window has its size: the view gets most of it, the charts a strip below (they
-  // scroll when there are more than fit), the settings a column.
-  QMetaObject::invokeMethod(
-      this,
-      [this] {
-        resizeDocks({chartsDock_}, {firstChartsHeight(height())}, Qt::Vertical);
-        resizeDocks({sidebarDock_}, {kSidebarWidth}, Qt::Horizontal);
-      },
-      Qt::QueuedConnection);
+  giveDocksFirstShare(*this, *chartsDock_, *sidebarDock_);
 }
 
 void MainWindow::resizeEvent(QResizeEvent* event) {
   QMainWindow::resizeEvent(event);
-  // The dock keeps its height in pixels when the window changes, so shrinking a tall window
-  // would leave the box a sliver above the charts: keep the charts' share of the height instead
-  // (the share the user dragged them to, or the first one).
-  const QSize old = event->oldSize();
-  if (!docksSized_ || !old.isValid() || old.height() == height() || chartsDock_->isHidden() ||
-      chartsDock_->isFloating()) {
-    return;
-  }
-  const double share = double(chartsDock_->height()) / double(old.height());
-  QMetaObject::invokeMethod(
-      this,
-      [this, share] {
-        resizeDocks({chartsDock_}, {int(std::lround(share * height()))}, Qt::Vertical);
-      },
-      Qt::QueuedConnection);
+  if (docksSized_ && event->oldSize().isValid())
+    keepChartsShare(*this, *chartsDock_, event->oldSize().height());
 }
 
 void MainWindow::showEvent(QShowEvent* event) {
@@ -375,11 +218,11 @@ void MainWindow::showEvent(QShowEvent* event) {
   shownOnce_ = true;
   if (docksSized_) return;
   docksSized_ = true;
-  sizeDocks();
+  giveDocksFirstShare(*this, *chartsDock_, *sidebarDock_);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  if (rememberSettings_) writeWindowSettings(*this);
+  if (rememberSettings_) writeWindowSettings(remembered());
   actions_->closeTools();  // cancels their runs: the app quits with its main window
   event->accept();
 }

@@ -1,30 +1,30 @@
 #pragma once
 
 #include <QMainWindow>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "fooball/run_spec.h"
 #include "fooball/scene.h"
+#include "recording/recording_frame_source.h"
+#include "window/window_settings.h"
 
 class QDockWidget;
 class QScrollArea;
-class QUndoStack;
 
 namespace fooball::gui {
 
-class ChartPanel;
+class BallCommands;
 class CompareReadout;
-class FrameLoop;
-class RunController;
 class RunFeed;
+class SceneCommands;
+class SceneSession;
 class SettingsSidebar;
-class SimulationView;
 class StatisticsPanel;
 class StatusPanel;
 class TimelineBar;
+class UserMessages;
 class WindowActions;
 
 /// What the window starts on; main() fills it from the command line and remembered settings.
@@ -46,10 +46,10 @@ struct StartupOptions {
 
 /// The FooBall window: it creates the simulation view with the compare readout above it, the
 /// settings sidebar, the chart panel and the gas statistics in docks, the menus (WindowActions),
-/// the status bar (StatusPanel) and the frame loop (FrameLoop), connects them to the RunController,
-/// and keeps the widgets in step with the runs. The runs' bookkeeping lives in the engine's
-/// RunGroup; what the sidebar's controls do is in sidebar_wiring.cpp, scene files and presets
-/// in scene_commands.cpp.
+/// the status bar (StatusPanel) and the frame loop (FrameLoop), connects them to the
+/// RunController and to each other, and restores the remembered settings. What a load or reset
+/// does is SceneSession's; what the sidebar's controls do, SidebarController's; the mouse on the
+/// box, MouseTools'; the menus, WindowActions'.
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
@@ -70,35 +70,20 @@ class MainWindow : public QMainWindow {
   RunFeed& feed() const { return *feed_; }
   StatusPanel& status() const { return *status_; }
   TimelineBar& timeline() const { return *timeline_; }
+  SceneSession& session() const { return *session_; }
+  SceneCommands& scenes() const { return *scenes_; }
+  UserMessages& messages() const { return *messages_; }
   QDockWidget* sidebarDock() const { return sidebarDock_; }
-  /// Edits and deletes of balls (ball_commands.h). Its commands name balls by index and hold
-  /// their states, so whatever renumbers or replaces the balls clears it: loading a scene or
-  /// preset, Restart, Reset scene and a ball-count change.
-  QUndoStack* undoStack() const { return undoStack_; }
   QDockWidget* chartsDock() const { return chartsDock_; }
   /// Closed at first; opened, it shares the charts' place as a tab.
   QDockWidget* statisticsDock() const { return statisticsDock_; }
-  /// The preset the scene came from; empty for a scene file.
-  const QString& presetName() const { return presetName_; }
-  /// The preset's or the scene file's name, as in the title.
-  const QString& sourceName() const { return sourceName_; }
+  /// What a recording draws and drives (File → Record…, --record).
+  RecordingTarget recordingTarget() const;
 
-  /// How errors reach the user: a message box by default; tests record them instead.
-  using ErrorReporter = std::function<void(const QString& title, const QString& message)>;
-  void setErrorReporter(ErrorReporter reporter) { reportError_ = std::move(reporter); }
-  void reportError(const QString& title, const QString& message) { reportError_(title, message); }
-
-  /// Every run starts on `scene` (valid); the sidebar, the charts and the title follow.
-  void loadScene(const Scene& scene, const QString& presetName, const QString& sourceName);
-  /// Back to the loaded scene at t = 0, keeping the settings of now.
-  void restart();
   /// View → Reset layout: the settings and charts back in place and shown, the statistics
   /// closed, the default window size (fitted to the screen), the charts and settings at their
   /// first share.
   void resetLayout();
-  /// The loaded scene exactly as loaded, sliders at their defaults.
-  void resetScene();
-
   /// One frame (FrameLoop::advance): physics for `elapsedSeconds` of real time (times the
   /// speed slider), the charts' samples and a repaint request.
   void advanceFrame(double elapsedSeconds);
@@ -106,32 +91,20 @@ class MainWindow : public QMainWindow {
   void startLiveUpdates();
   void updateStatusBar();
 
-  void showStatus(const QString& message);
-  /// Brings every control in line with the runs (after a load or reset).
-  void syncSidebar();
-  /// The run list, the readout and the title after runs changed.
-  void showRuns();
-
  protected:
   void closeEvent(QCloseEvent* event) override;
   void showEvent(QShowEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
-  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void createDocks();
-  /// The settings dock's least width: its widest control row, beside the scroll bar.
-  void fitSidebarWidth();
-  /// Gives the charts and the settings their first share of the window (queued: after layout).
-  void sizeDocks();
-  void connectRuns();
-  void resetCharts();
+  /// The window follows the runs, the scene and the menus: title, status bar, layout.
+  void connectParts();
   void updateTitle();
+  RememberedParts remembered();
 
   std::unique_ptr<RunController> runs_;
   bool rememberSettings_;
-  QString presetName_;
-  QString sourceName_;
   bool docksSized_ = false;   ///< the docks got their first size (or a remembered layout)
   bool shownOnce_ = false;    ///< shown before: the frame fit (keepFullyOnScreen) is done
   QByteArray defaultLayout_;  ///< saveState() of the docks as created, for View → Reset layout
@@ -150,9 +123,10 @@ class MainWindow : public QMainWindow {
   TimelineBar* timeline_ = nullptr;
   std::unique_ptr<RunFeed> feed_;
   FrameLoop* frames_ = nullptr;
-  QUndoStack* undoStack_ = nullptr;
-
-  ErrorReporter reportError_;
+  UserMessages* messages_ = nullptr;
+  SceneSession* session_ = nullptr;
+  std::unique_ptr<SceneCommands> scenes_;
+  std::unique_ptr<BallCommands> balls_;
 };
 
 }  // namespace fooball::gui

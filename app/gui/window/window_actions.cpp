@@ -5,10 +5,14 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QMainWindow>
 #include <QMenuBar>
 #include <QUndoStack>
 
 #include "charts/chart_panel.h"
+#include "control/ball_commands.h"
+#include "control/scene_commands.h"
+#include "control/scene_session.h"
 #include "frames/run_feed.h"
 #include "recording/record_dialog.h"
 #include "run/run_controller.h"
@@ -18,18 +22,15 @@
 #include "tools/failure_map_dialog.h"
 #include "tools/tradeoff_dialog.h"
 #include "view/simulation_view.h"
-#include "window/ball_commands.h"
+#include "widgets/user_messages.h"
 #include "window/help_dialogs.h"
-#include "window/main_window.h"
-#include "window/recording_target.h"
-#include "window/scene_commands.h"
-#include "window/sidebar_wiring.h"
 
 namespace fooball::gui {
 
-WindowActions::WindowActions(MainWindow& window) : QObject(&window), window_(window) {
+WindowActions::WindowActions(Parts parts) : QObject(&parts.window), parts_(parts) {
   createActions();
   createMenus();
+  followSidebar();
 }
 
 void WindowActions::createActions() {
@@ -37,7 +38,7 @@ void WindowActions::createActions() {
   pause_->setCheckable(true);
   pause_->setShortcut(Qt::Key_Space);
   pause_->setToolTip(tr("Pause or continue every run (Space)"));
-  connect(pause_, &QAction::toggled, &window_.runs(), &RunController::setPaused);
+  connect(pause_, &QAction::toggled, &parts_.runs, &RunController::setPaused);
 
   step_ = new QAction(tr("Single &step"), this);
   step_->setShortcut(Qt::Key_Period);
@@ -48,7 +49,7 @@ void WindowActions::createActions() {
   stepBack_->setShortcut(Qt::Key_Comma);
   stepBack_->setToolTip(tr("Rewind every run one kept moment (0.1 s) while paused (,)"));
   stepBack_->setEnabled(false);
-  connect(stepBack_, &QAction::triggered, &window_.runs(), &RunController::stepBack);
+  connect(stepBack_, &QAction::triggered, &parts_.runs, &RunController::stepBack);
 
   createUndoActions();
 
@@ -57,21 +58,19 @@ void WindowActions::createActions() {
   deleteBall_->setToolTip(tr("Remove the selected ball from every run (Delete)"));
   deleteBall_->setEnabled(false);
   connect(deleteBall_, &QAction::triggered, this, [this] {
-    if (const auto selected = window_.runs().group().selected()) {
-      gui::deleteBall(window_, *selected);
-    }
+    if (const auto selected = parts_.runs.group().selected()) parts_.balls.deleteBall(*selected);
   });
   connect(step_, &QAction::triggered, this, [this] {
-    window_.runs().stepOnce();
-    window_.feed().sampleCharts();
-    window_.feed().showReadouts();
-    window_.feed().showStatistics();
-    window_.feed().showSelectedBall();
-    window_.view()->update();
-    window_.updateStatusBar();
+    parts_.runs.stepOnce();
+    parts_.feed.sampleCharts();
+    parts_.feed.showReadouts();
+    parts_.feed.showStatistics();
+    parts_.feed.showSelectedBall();
+    parts_.view.update();
+    emit stepped();
   });
 
-  SimulationView* view = window_.view();
+  SimulationView* view = &parts_.view;
   const auto drawingAction = [this, view](const QString& text, const QKeySequence& shortcut,
                                           void (SimulationView::*setter)(bool)) {
     auto* action = new QAction(text, this);
@@ -79,8 +78,8 @@ void WindowActions::createActions() {
     action->setShortcut(shortcut);
     connect(action, &QAction::toggled, view, setter);
     connect(action, &QAction::toggled, this, [this, view] {
-      window_.sidebar()->showDrawing(view->temperatureColouring(), view->tethers(),
-                                     view->velocityVectors(), view->centreOfMass());
+      parts_.sidebar.showDrawing(view->temperatureColouring(), view->tethers(),
+                                 view->velocityVectors(), view->centreOfMass());
     });
     return action;
   };
@@ -109,8 +108,8 @@ void WindowActions::createActions() {
   overlay_->setChecked(true);
   sideBySide_->setShortcut(QKeySequence(tr("Ctrl+Shift+B")));
   const auto useLayout = [this](CompareLayout layout) {
-    window_.view()->setCompareLayout(layout);
-    window_.sidebar()->runList()->showCompareLayout(layout);
+    parts_.view.setCompareLayout(layout);
+    parts_.sidebar.runList()->showCompareLayout(layout);
   };
   connect(overlay_, &QAction::triggered, this, [useLayout] { useLayout(CompareLayout::Overlay); });
   connect(sideBySide_, &QAction::triggered, this,
@@ -118,13 +117,13 @@ void WindowActions::createActions() {
 }
 
 void WindowActions::createUndoActions() {
-  QUndoStack* stack = window_.undoStack();
+  QUndoStack* stack = &parts_.undoStack;
   undo_ = new QAction(this);
   undo_->setShortcut(QKeySequence::Undo);
   redo_ = new QAction(this);
   redo_->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
-  connect(undo_, &QAction::triggered, this, [this] { undoBallChange(window_); });
-  connect(redo_, &QAction::triggered, this, [this] { redoBallChange(window_); });
+  connect(undo_, &QAction::triggered, this, [this] { parts_.balls.undo(); });
+  connect(redo_, &QAction::triggered, this, [this] { parts_.balls.redo(); });
   // The text names the change, "Undo move of ball 7", as QUndoStack::createUndoAction's would;
   // these are our own actions so that a change that no longer fits is refused (ball_commands.h).
   const auto show = [this, stack] {
@@ -142,7 +141,7 @@ void WindowActions::createUndoActions() {
 }
 
 void WindowActions::createMenus() {
-  QMenuBar* bar = window_.menuBar();
+  QMenuBar* bar = parts_.window.menuBar();
   QMenu* file = bar->addMenu(tr("&File"));
   file->addAction(tr("&Open scene…"), QKeySequence::Open, this, &WindowActions::openSceneDialog);
   file->addAction(tr("&Save scene as…"), QKeySequence::Save, this, &WindowActions::saveSceneDialog);
@@ -155,7 +154,7 @@ void WindowActions::createMenus() {
   record_->setToolTip(
       tr("Record the box, or the box and the charts, to MP4, WebM or an animated GIF"));
   file->addSeparator();
-  file->addAction(tr("&Quit"), QKeySequence::Quit, &window_, &QWidget::close);
+  file->addAction(tr("&Quit"), QKeySequence::Quit, &parts_.window, &QWidget::close);
 
   QMenu* edit = bar->addMenu(tr("&Edit"));
   edit->addActions({undo_, redo_});
@@ -167,29 +166,31 @@ void WindowActions::createMenus() {
   // A field being edited keeps Delete for its text: Qt gives editors their editing keys first.
   simulation->addAction(deleteBall_);
   simulation->addSeparator();
-  simulation->addAction(tr("&Restart"), QKeySequence(tr("Ctrl+R")), &window_, &MainWindow::restart);
-  simulation->addAction(tr("Rese&t scene"), QKeySequence(tr("Ctrl+Shift+R")), &window_,
-                        &MainWindow::resetScene);
-  simulation->addAction(tr("Reset s&liders"), this, [this] { resetSliders(window_); });
-  simulation->addAction(tr("&Clear attractors"), QKeySequence(tr("Ctrl+Backspace")), this,
-                        [this] { clearAttractors(window_); });
+  SceneSession* session = &parts_.session;
+  simulation->addAction(tr("&Restart"), QKeySequence(tr("Ctrl+R")), session,
+                        &SceneSession::restart);
+  simulation->addAction(tr("Rese&t scene"), QKeySequence(tr("Ctrl+Shift+R")), session,
+                        &SceneSession::resetScene);
+  simulation->addAction(tr("Reset s&liders"), session, &SceneSession::resetSliders);
+  simulation->addAction(tr("&Clear attractors"), QKeySequence(tr("Ctrl+Backspace")), session,
+                        &SceneSession::clearAttractors);
 
   QMenu* viewMenu = bar->addMenu(tr("&View"));
-  QAction* sidebarToggle = window_.sidebarDock()->toggleViewAction();
+  QAction* sidebarToggle = parts_.sidebarDock.toggleViewAction();
   sidebarToggle->setShortcut(QKeySequence(tr("Ctrl+1")));
-  QAction* chartsToggle = window_.chartsDock()->toggleViewAction();
+  QAction* chartsToggle = parts_.chartsDock.toggleViewAction();
   chartsToggle->setShortcut(QKeySequence(tr("Ctrl+2")));
-  QAction* statisticsToggle = window_.statisticsDock()->toggleViewAction();
+  QAction* statisticsToggle = parts_.statisticsDock.toggleViewAction();
   statisticsToggle->setShortcut(QKeySequence(tr("Ctrl+3")));
   statisticsToggle->setToolTip(
       tr("Speed histogram against Maxwell–Boltzmann, temperature, pressure and collision rate "
          "against the hard-disk theory (Ctrl+3)"));
   viewMenu->addActions({sidebarToggle, chartsToggle, statisticsToggle});
   QAction* focusBox = viewMenu->addAction(tr("&Focus the box"), QKeySequence(Qt::Key_Escape),
-                                          window_.view(), qOverload<>(&QWidget::setFocus));
+                                          &parts_.view, qOverload<>(&QWidget::setFocus));
   focusBox->setToolTip(tr("Give the keyboard back to the box (Esc): Space pauses, '.' steps"));
   QAction* resetLayout =
-      viewMenu->addAction(tr("Reset &layout"), &window_, &MainWindow::resetLayout);
+      viewMenu->addAction(tr("Reset &layout"), this, &WindowActions::resetLayoutRequested);
   resetLayout->setToolTip(
       tr("Put the settings and charts back where they were at first start, statistics closed"));
   viewMenu->addSeparator();
@@ -212,13 +213,28 @@ void WindowActions::createMenus() {
 
   QMenu* help = bar->addMenu(tr("&Help"));
   help->addAction(tr("&Mouse and keys"), QKeySequence::HelpContents, this,
-                  [this] { showMouseAndKeys(&window_); });
-  help->addAction(tr("&Reading the charts"), this, [this] { showReadingTheCharts(&window_); });
-  help->addAction(tr("&About FooBall"), this, [this] { showAbout(&window_); });
+                  [this] { showMouseAndKeys(&parts_.window); });
+  help->addAction(tr("&Reading the charts"), this,
+                  [this] { showReadingTheCharts(&parts_.window); });
+  help->addAction(tr("&About FooBall"), this, [this] { showAbout(&parts_.window); });
   help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 
   for (QMenu* menu : {file, edit, simulation, viewMenu, tools, help})
     menu->setToolTipsVisible(true);
+}
+
+void WindowActions::followSidebar() {
+  const SettingsSidebar* sidebar = &parts_.sidebar;
+  connect(sidebar, &SettingsSidebar::temperatureToggled, temperature_, &QAction::setChecked);
+  connect(sidebar, &SettingsSidebar::tethersToggled, tethers_, &QAction::setChecked);
+  connect(sidebar, &SettingsSidebar::velocityVectorsToggled, velocityVectors_,
+          &QAction::setChecked);
+  connect(sidebar, &SettingsSidebar::centreOfMassToggled, centreOfMass_, &QAction::setChecked);
+  connect(sidebar->runList(), &RunListEditor::compareLayoutChosen, this,
+          [this](CompareLayout layout) {
+            (layout == CompareLayout::Overlay ? overlay_ : sideBySide_)->setChecked(true);
+            parts_.view.setCompareLayout(layout);
+          });
 }
 
 void WindowActions::applyShowOptions(const QStringList& show) {
@@ -227,7 +243,7 @@ void WindowActions::applyShowOptions(const QStringList& show) {
   if (show.contains(QStringLiteral("centre-of-mass"))) centreOfMass_->setChecked(true);
   if (show.contains(QStringLiteral("side-by-side"))) sideBySide_->trigger();
   // In front of the charts' tab (MainWindow::createDocks).
-  if (show.contains(QStringLiteral("statistics"))) window_.statisticsDock()->show();
+  if (show.contains(QStringLiteral("statistics"))) parts_.statisticsDock.show();
 }
 
 void WindowActions::showPaused(bool paused) {
@@ -238,52 +254,54 @@ void WindowActions::showPaused(bool paused) {
 }
 
 void WindowActions::openSceneDialog() {
-  const QString path = QFileDialog::getOpenFileName(&window_, tr("Open scene"), QString(),
+  const QString path = QFileDialog::getOpenFileName(&parts_.window, tr("Open scene"), QString(),
                                                     tr("FooBall scenes (*.json);;All files (*)"));
-  if (!path.isEmpty()) openSceneFile(window_, path);
+  if (!path.isEmpty()) parts_.scenes.openSceneFile(path);
 }
 
 void WindowActions::saveSceneDialog() {
-  const QString path = QFileDialog::getSaveFileName(&window_, tr("Save scene"), QString(),
+  const QString path = QFileDialog::getSaveFileName(&parts_.window, tr("Save scene"), QString(),
                                                     tr("FooBall scenes (*.json)"));
-  if (!path.isEmpty()) saveSceneFile(window_, path);
+  if (!path.isEmpty()) parts_.scenes.saveSceneFile(path);
 }
 
 void WindowActions::exportChartsPng() {
-  const QString path = QFileDialog::getSaveFileName(&window_, tr("Export charts as PNG"), QString(),
-                                                    tr("PNG images (*.png)"));
+  const QString path = QFileDialog::getSaveFileName(&parts_.window, tr("Export charts as PNG"),
+                                                    QString(), tr("PNG images (*.png)"));
   if (!path.isEmpty()) exportChartsPngTo(path);
 }
 
 bool WindowActions::exportChartsPngTo(const QString& path) {
-  if (!window_.charts()->exportPng(path, chartCaption())) {
-    window_.reportError(tr("Could not export the charts"), tr("Could not write %1").arg(path));
+  if (!parts_.charts.exportPng(path, chartCaption())) {
+    parts_.messages.reportError(tr("Could not export the charts"),
+                                tr("Could not write %1").arg(path));
     return false;
   }
-  window_.showStatus(tr("Charts saved to %1").arg(path));
+  parts_.messages.showStatus(tr("Charts saved to %1").arg(path));
   return true;
 }
 
 QString WindowActions::chartCaption() const {
-  const RunController& runs = window_.runs();
+  const RunController& runs = parts_.runs;
   QStringList labels = runs.labels();
   if (labels.size() > 1) labels.front() += tr(" (reference)");
   if (runs.group().hasBaseline()) labels.append(tr("chaos baseline"));
   return tr("FooBall — %1, %2 balls, t = %3 s — %4: %5")
-      .arg(window_.sourceName())
+      .arg(parts_.session.sourceName())
       .arg(runs.group().ballCount())
       .arg(runs.group().time(), 0, 'f', 2)
       .arg(labels.size() > 1 ? tr("runs") : tr("run"), labels.join(QStringLiteral(", ")));
 }
 
 void WindowActions::exportChartsCsv() {
-  const QString path = QFileDialog::getSaveFileName(&window_, tr("Export charts as CSV"), QString(),
-                                                    tr("CSV files (*.csv)"));
+  const QString path = QFileDialog::getSaveFileName(&parts_.window, tr("Export charts as CSV"),
+                                                    QString(), tr("CSV files (*.csv)"));
   if (path.isEmpty()) return;
-  if (window_.charts()->exportCsv(path)) {
-    window_.showStatus(tr("Chart data saved to %1").arg(path));
+  if (parts_.charts.exportCsv(path)) {
+    parts_.messages.showStatus(tr("Chart data saved to %1").arg(path));
   } else {
-    window_.reportError(tr("Could not export the chart data"), tr("Could not write %1").arg(path));
+    parts_.messages.reportError(tr("Could not export the chart data"),
+                                tr("Could not write %1").arg(path));
   }
 }
 
@@ -299,9 +317,11 @@ void showTool(QDialog* dialog) {
 
 RecordDialog* WindowActions::openRecord() {
   if (!recordDialog_) {
-    recordDialog_ = new RecordDialog(recordingTargetOf(window_), window_);
-    connect(recordDialog_, &RecordDialog::errorToReport, &window_, &MainWindow::reportError);
-    connect(recordDialog_, &RecordDialog::statusToShow, &window_, &MainWindow::showStatus);
+    recordDialog_ = new RecordDialog(parts_.recording, parts_.window);
+    connect(recordDialog_, &RecordDialog::errorToReport, &parts_.messages,
+            &UserMessages::reportError);
+    connect(recordDialog_, &RecordDialog::statusToShow, &parts_.messages,
+            &UserMessages::showStatus);
   }
   showTool(recordDialog_);
   return recordDialog_;
@@ -309,7 +329,7 @@ RecordDialog* WindowActions::openRecord() {
 
 void WindowActions::openBenchmark() {
   if (!benchmarkDialog_) {
-    benchmarkDialog_ = new BenchmarkDialog(&window_);
+    benchmarkDialog_ = new BenchmarkDialog(&parts_.window);
     connect(benchmarkDialog_, &BenchmarkDialog::runStarted, this, &WindowActions::toolRunStarted);
     connect(benchmarkDialog_, &BenchmarkDialog::runFinished, this, &WindowActions::toolRunFinished);
   }
@@ -318,7 +338,7 @@ void WindowActions::openBenchmark() {
 
 void WindowActions::openTradeoff() {
   if (!tradeoffDialog_) {
-    tradeoffDialog_ = new TradeoffDialog(&window_);
+    tradeoffDialog_ = new TradeoffDialog(&parts_.window);
     connectTool(tradeoffDialog_);
   }
   showTool(tradeoffDialog_);
@@ -326,7 +346,7 @@ void WindowActions::openTradeoff() {
 
 void WindowActions::openFailureMap() {
   if (!failureMapDialog_) {
-    failureMapDialog_ = new FailureMapDialog(&window_);
+    failureMapDialog_ = new FailureMapDialog(&parts_.window);
     connectTool(failureMapDialog_);
   }
   showTool(failureMapDialog_);
@@ -336,22 +356,22 @@ void WindowActions::connectTool(ToolDialog* dialog) {
   connect(dialog, &ToolDialog::runStarted, this, &WindowActions::toolRunStarted);
   connect(dialog, &ToolDialog::runFinished, this, &WindowActions::toolRunFinished);
   connect(dialog, &ToolDialog::openRequested, this, [this](const Configuration& configuration) {
-    openConfiguration(window_, configuration);
+    parts_.scenes.openConfiguration(configuration);
   });
 }
 
 void WindowActions::toolRunStarted() {
   // The measurements and the simulation would share the CPU: the runs pause meanwhile.
   if (toolRuns_++ == 0) {
-    pausedForTools_ = !window_.runs().paused();
-    if (pausedForTools_) window_.runs().setPaused(true);
+    pausedForTools_ = !parts_.runs.paused();
+    if (pausedForTools_) parts_.runs.setPaused(true);
   }
-  window_.showStatus(tr("Paused while the measurement runs"));
+  parts_.messages.showStatus(tr("Paused while the measurement runs"));
 }
 
 void WindowActions::toolRunFinished() {
   if (--toolRuns_ > 0) return;
-  if (pausedForTools_) window_.runs().setPaused(false);
+  if (pausedForTools_) parts_.runs.setPaused(false);
   pausedForTools_ = false;
 }
 

@@ -3,25 +3,55 @@
 #include <QObject>
 #include <QStringList>
 
+#include "recording/recording_frame_source.h"
+
 class QAction;
+class QDockWidget;
+class QMainWindow;
+class QUndoStack;
 
 namespace fooball::gui {
 
+class BallCommands;
 class BenchmarkDialog;
 class FailureMapDialog;
 class RecordDialog;
+class RunFeed;
+class SceneCommands;
+class SceneSession;
+class SettingsSidebar;
 class ToolDialog;
 class TradeoffDialog;
-class MainWindow;
+class UserMessages;
 
 /// The window's menus and the actions in them: File (scenes, chart export), Simulation (pause,
 /// single step, restart, resets), View (docks, drawing options, compare layout), Tools
-/// (Benchmark) and Help. The drawing actions and the sidebar's check boxes mirror each other.
+/// (Benchmark) and Help. The drawing actions and the sidebar's check boxes mirror each other, as
+/// do the compare layout's actions and the run list's choice.
 class WindowActions : public QObject {
   Q_OBJECT
 
  public:
-  explicit WindowActions(MainWindow& window);
+  /// What the actions act on; `window` gets the menus and is the dialogs' parent.
+  struct Parts {
+    QMainWindow& window;
+    RunController& runs;
+    SimulationView& view;
+    SettingsSidebar& sidebar;
+    ChartPanel& charts;
+    RunFeed& feed;
+    SceneSession& session;
+    SceneCommands& scenes;
+    BallCommands& balls;
+    QUndoStack& undoStack;
+    UserMessages& messages;
+    QDockWidget& sidebarDock;
+    QDockWidget& chartsDock;
+    QDockWidget& statisticsDock;
+    RecordingTarget recording;
+  };
+
+  explicit WindowActions(Parts parts);
 
   QAction* pause() const { return pause_; }
   QAction* step() const { return step_; }
@@ -68,11 +98,19 @@ class WindowActions : public QObject {
   /// The caption: "FooBall — gas, 300 balls, t = 6.00 s — runs: elastic (reference), exact".
   QString chartCaption() const;
 
+ signals:
+  /// Simulation → Single step took its step (the readouts show it already).
+  void stepped();
+  /// View → Reset layout.
+  void resetLayoutRequested();
+
  private:
   void createActions();
-  /// Edit → Undo and Redo, following the window's undo stack.
+  /// Edit → Undo and Redo, following the ball undo stack.
   void createUndoActions();
   void createMenus();
+  /// The sidebar's drawing check boxes and compare layout choice set the View menu's actions.
+  void followSidebar();
   void openSceneDialog();
   void saveSceneDialog();
   void exportChartsPng();
@@ -87,7 +125,7 @@ class WindowActions : public QObject {
   void toolRunStarted();
   void toolRunFinished();
 
-  MainWindow& window_;
+  Parts parts_;
   QAction* pause_ = nullptr;
   QAction* deleteBall_ = nullptr;
   QAction* undo_ = nullptr;

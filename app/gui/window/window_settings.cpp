@@ -2,16 +2,17 @@
 
 #include <QAction>
 #include <QGuiApplication>
+#include <QMainWindow>
 #include <QScreen>
 #include <QSettings>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "control/scene_session.h"
 #include "frames/frame_loop.h"
 #include "run/run_controller.h"
 #include "view/simulation_view.h"
-#include "window/main_window.h"
 #include "window/window_actions.h"
 
 namespace fooball::gui {
@@ -32,7 +33,8 @@ double readNumber(const QSettings& settings, const QString& key, double fallback
 
 }  // namespace
 
-bool readWindowSettings(MainWindow& window) {
+bool readWindowSettings(const RememberedParts& parts) {
+  QMainWindow& window = parts.window;
   QSettings settings;
   bool restored = false;
   if (settings.value("settings/version").toInt() == kSettingsVersion) {
@@ -40,7 +42,7 @@ bool readWindowSettings(MainWindow& window) {
     restored = window.restoreState(settings.value("window/state").toByteArray());
   }
   keepFullyOnScreen(window);
-  const WindowActions& actions = window.actions();
+  const WindowActions& actions = parts.actions;
   actions.temperature()->setChecked(settings.value("drawing/temperature", false).toBool());
   actions.tethers()->setChecked(settings.value("drawing/tethers", true).toBool());
   actions.velocityVectors()->setChecked(settings.value("drawing/velocityVectors", false).toBool());
@@ -54,20 +56,21 @@ bool readWindowSettings(MainWindow& window) {
       std::clamp(settings.value("mouse/scope", 0).toInt(), 0, int(Scope::Selected)));
   const double strength = readNumber(settings, "mouse/strength", Interactions::kDefaultStrength,
                                      0.0, std::numeric_limits<double>::max());
-  window.runs().changeTools([&](RunGroup& group) {
+  parts.runs.changeTools([&](RunGroup& group) {
     group.setMouseMode(mode);
     group.setScope(scope);
     group.setStrength(strength);
   });
-  window.frames().setTimeScale(readNumber(settings, "time/scale", FrameLoop::kDefaultTimeScale,
-                                          kMinTimeScale, kMaxTimeScale));
+  parts.frames.setTimeScale(readNumber(settings, "time/scale", FrameLoop::kDefaultTimeScale,
+                                       kMinTimeScale, kMaxTimeScale));
   return restored;
 }
 
-void writeWindowSettings(const MainWindow& window) {
+void writeWindowSettings(const RememberedParts& parts) {
   QSettings settings;
-  const SimulationView& view = *window.view();
-  const RunGroup& group = window.runs().group();
+  const QMainWindow& window = parts.window;
+  const SimulationView& view = parts.view;
+  const RunGroup& group = parts.runs.group();
   settings.setValue("settings/version", kSettingsVersion);
   settings.setValue("window/geometry", window.saveGeometry());
   settings.setValue("window/state", window.saveState());
@@ -80,9 +83,9 @@ void writeWindowSettings(const MainWindow& window) {
   settings.setValue("mouse/mode", int(group.interactions().mode));
   settings.setValue("mouse/scope", int(group.interactions().scope));
   settings.setValue("mouse/strength", group.interactions().strength);
-  settings.setValue("time/scale", window.frames().timeScale());
+  settings.setValue("time/scale", parts.frames.timeScale());
   settings.setValue("run/backend", QString::fromStdString(group.spec(0).backend));
-  const QString preset = window.presetName();
+  const QString preset = parts.session.presetName();
   if (!preset.isEmpty()) settings.setValue("scene/preset", preset);
 }
 

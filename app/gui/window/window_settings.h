@@ -1,10 +1,25 @@
 #pragma once
 
+class QMainWindow;
 class QWidget;
 
 namespace fooball::gui {
 
-class MainWindow;
+class FrameLoop;
+class RunController;
+class SceneSession;
+class SimulationView;
+class WindowActions;
+
+/// What the remembered settings are read into and written from.
+struct RememberedParts {
+  QMainWindow& window;  ///< its geometry and dock layout
+  const WindowActions& actions;
+  const SimulationView& view;
+  RunController& runs;
+  FrameLoop& frames;
+  const SceneSession& session;
+};
 
 /// The layout of the keys writeWindowSettings stores. Raise it when a key changes meaning or the
 /// window's docks change: a file of another version (an older app's, or a newer one's) still
@@ -15,9 +30,9 @@ inline constexpr int kSettingsVersion = 2;  // 2: the Statistics dock
 /// Restores what the user chose last time (QSettings): window geometry and dock layout, drawing
 /// options, compare layout, mouse tool and speed, then keeps the window fully on a screen.
 /// Returns whether a dock layout was restored.
-bool readWindowSettings(MainWindow& window);
+bool readWindowSettings(const RememberedParts& parts);
 /// Remembers the same, plus run 0's backend and the preset, for the next start.
-void writeWindowSettings(const MainWindow& window);
+void writeWindowSettings(const RememberedParts& parts);
 /// Forgets everything the app remembers (fooball --reset-settings): the next start is a first
 /// start.
 void forgetWindowSettings();

@@ -1,4 +1,4 @@
-#include "window/ball_commands.h"
+#include "control/ball_commands.h"
 
 #include <QUndoCommand>
 #include <QUndoStack>
@@ -9,8 +9,7 @@
 #include "frames/run_feed.h"
 #include "run/run_controller.h"
 #include "sidebar/ball_inspector.h"
-#include "sidebar/settings_sidebar.h"
-#include "window/main_window.h"
+#include "widgets/user_messages.h"
 
 namespace fooball::gui {
 
@@ -20,8 +19,8 @@ namespace {
 /// now (QUndoStack moves on whatever undo() does, so the check comes first).
 class BallCommand : public QUndoCommand {
  public:
-  BallCommand(MainWindow& window, std::size_t index, BallStates before, const QString& text)
-      : QUndoCommand(text), window_(window), index_(index), before_(std::move(before)) {}
+  BallCommand(RunController& runs, std::size_t index, BallStates before, const QString& text)
+      : QUndoCommand(text), runs_(runs), index_(index), before_(std::move(before)) {}
 
   virtual std::optional<BallProblem> undoProblem() const = 0;
   virtual std::optional<BallProblem> redoProblem() const = 0;
@@ -34,9 +33,9 @@ class BallCommand : public QUndoCommand {
 
  protected:
   virtual void applyRedo() = 0;
-  RunController& runs() const { return window_.runs(); }
+  RunController& runs() const { return runs_; }
 
-  MainWindow& window_;
+  RunController& runs_;
   std::size_t index_;
   BallStates before_;  ///< the ball in every run before the change
 
@@ -46,9 +45,9 @@ class BallCommand : public QUndoCommand {
 
 class EditCommand : public BallCommand {
  public:
-  EditCommand(MainWindow& window, std::size_t index, BallStates before, BallStates after,
+  EditCommand(RunController& runs, std::size_t index, BallStates before, BallStates after,
               const QString& text)
-      : BallCommand(window, index, std::move(before), text), after_(std::move(after)) {}
+      : BallCommand(runs, index, std::move(before), text), after_(std::move(after)) {}
 
   std::optional<BallProblem> undoProblem() const override {
     return runs().group().findRestoreProblem(index_, before_, BallPlacement::Replace);
@@ -110,14 +109,16 @@ const BallCommand* nextCommand(const QUndoStack& stack, bool undo) {
   return static_cast<const BallCommand*>(stack.command(index));
 }
 
-void undoOrRedo(MainWindow& window, bool undo) {
-  QUndoStack& stack = *window.undoStack();
+}  // namespace
+
+void BallCommands::undoOrRedo(bool undo) {
+  QUndoStack& stack = parts_.undoStack;
   const BallCommand* command = nextCommand(stack, undo);
   if (command == nullptr) return;
   const QString action = undo ? QObject::tr("undo %1") : QObject::tr("redo %1");
   const QString text = action.arg(command->text());
   if (const auto problem = undo ? command->undoProblem() : command->redoProblem()) {
-    window.showStatus(
+    parts_.messages.showStatus(
         QObject::tr("Cannot %1: %2").arg(text, QString::fromStdString(plainWords(*problem))));
     return;
   }
@@ -126,47 +127,36 @@ void undoOrRedo(MainWindow& window, bool undo) {
   } else {
     stack.redo();
   }
-  window.feed().markChange(text);
-  window.feed().showSelectedBall();
+  parts_.feed.markChange(text);
+  parts_.feed.showSelectedBall();
 }
 
-}  // namespace
-
-void editBall(MainWindow& window, std::size_t index, const BallDef& edited) {
-  BallInspector* inspector = window.sidebar()->inspector();
-  const BallDef before = window.runs().group().ball(index);
-  BallStates saved = window.runs().group().ballStates(index);
+void BallCommands::editBall(std::size_t index, const BallDef& edited) {
+  const BallDef before = parts_.runs.group().ball(index);
+  BallStates saved = parts_.runs.group().ballStates(index);
   try {
-    const BallDef after = window.runs().editBall(index, edited);
-    window.undoStack()->push(new EditCommand(window, index, std::move(saved),
-                                             window.runs().group().ballStates(index),
-                                             editText(index, before, after)));
-    window.feed().markChange(QObject::tr("ball #%1 edited").arg(index));
+    const BallDef after = parts_.runs.editBall(index, edited);
+    parts_.undoStack.push(new EditCommand(parts_.runs, index, std::move(saved),
+                                          parts_.runs.group().ballStates(index),
+                                          editText(index, before, after)));
+    parts_.feed.markChange(QObject::tr("ball #%1 edited").arg(index));
   } catch (const SceneError& error) {
     const auto* refused = dynamic_cast<const BallError*>(&error);
     const QString message =
         QString::fromStdString(refused ? plainWords(refused->problem()) : error.what());
-    inspector->showBall(index, window.runs().group().ball(index), true);
-    inspector->showError(message);
-    window.showStatus(message);
+    parts_.inspector.showBall(index, parts_.runs.group().ball(index), true);
+    parts_.inspector.showError(message);
+    parts_.messages.showStatus(message);
   }
-  window.feed().showSelectedBall();
+  parts_.feed.showSelectedBall();
 }
 
-void deleteBall(MainWindow& window, std::size_t index) {
-  BallStates saved = window.runs().group().ballStates(index);
-  window.runs().deleteBall(index);
-  window.undoStack()->push(new DeleteCommand(window, index, std::move(saved),
-                                             QObject::tr("delete of ball %1").arg(index)));
-  window.feed().markChange(QObject::tr("ball #%1 deleted").arg(index));
-}
-
-void undoBallChange(MainWindow& window) {
-  undoOrRedo(window, true);
-}
-
-void redoBallChange(MainWindow& window) {
-  undoOrRedo(window, false);
+void BallCommands::deleteBall(std::size_t index) {
+  BallStates saved = parts_.runs.group().ballStates(index);
+  parts_.runs.deleteBall(index);
+  parts_.undoStack.push(new DeleteCommand(parts_.runs, index, std::move(saved),
+                                          QObject::tr("delete of ball %1").arg(index)));
+  parts_.feed.markChange(QObject::tr("ball #%1 deleted").arg(index));
 }
 
 }  // namespace fooball::gui

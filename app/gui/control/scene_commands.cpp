@@ -1,4 +1,4 @@
-#include "window/scene_commands.h"
+#include "control/scene_commands.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "control/scene_session.h"
 #include "fooball/presets.h"
 #include "fooball/scene_error.h"
 #include "fooball/scene_file.h"
@@ -17,7 +18,7 @@
 #include "run/run_controller.h"
 #include "sidebar/settings_sidebar.h"
 #include "tradeoff.h"
-#include "window/main_window.h"
+#include "widgets/user_messages.h"
 
 namespace fooball::gui {
 
@@ -43,63 +44,63 @@ QString openedText(const QString& path, const Scene& scene) {
 
 }  // namespace
 
-bool openSceneFile(MainWindow& window, const QString& path) {
+bool SceneCommands::openSceneFile(const QString& path) {
   try {
     const Scene scene = loadSceneFile(toPath(path));
-    window.loadScene(scene, QString(), QFileInfo(path).fileName());
-    window.showStatus(openedText(path, scene));
+    parts_.session.loadScene(scene, QString(), QFileInfo(path).fileName());
+    parts_.messages.showStatus(openedText(path, scene));
     return true;
   } catch (const std::exception& error) {
     const QString message = QString::fromStdString(error.what());
-    window.showStatus(
+    parts_.messages.showStatus(
         QObject::tr("Could not open the scene; the current one stays: %1").arg(message));
-    window.reportError(QObject::tr("Could not open the scene"), message);
+    parts_.messages.reportError(QObject::tr("Could not open the scene"), message);
     return false;
   }
 }
 
-bool saveSceneFile(MainWindow& window, const QString& path) {
+bool SceneCommands::saveSceneFile(const QString& path) {
   try {
-    fooball::saveSceneFile(window.runs().savedScene(), toPath(path));
-    window.showStatus(QObject::tr("Saved %1").arg(path));
+    fooball::saveSceneFile(parts_.runs.savedScene(), toPath(path));
+    parts_.messages.showStatus(QObject::tr("Saved %1").arg(path));
     return true;
   } catch (const std::exception& error) {
     const QString message = QString::fromStdString(error.what());
-    window.showStatus(message);
-    window.reportError(QObject::tr("Could not save the scene"), message);
+    parts_.messages.showStatus(message);
+    parts_.messages.reportError(QObject::tr("Could not save the scene"), message);
     return false;
   }
 }
 
-bool openPreset(MainWindow& window, const QString& name) {
+bool SceneCommands::openPreset(const QString& name) {
   try {
-    window.loadScene(loadPreset(name.toStdString()), name, name);
+    parts_.session.loadScene(loadPreset(name.toStdString()), name, name);
     return true;
   } catch (const SceneError& error) {
     const QString message = QString::fromStdString(error.what());
-    window.showStatus(message);
-    window.reportError(QObject::tr("Could not load the preset"), message);
-    window.syncSidebar();
+    parts_.messages.showStatus(message);
+    parts_.messages.reportError(QObject::tr("Could not load the preset"), message);
+    parts_.session.syncSidebar();
     return false;
   }
 }
 
-bool setBallCount(MainWindow& window, std::size_t count) {
-  const std::size_t before = window.runs().group().ballCount();
+bool SceneCommands::setBallCount(std::size_t count) {
+  const std::size_t before = parts_.runs.group().ballCount();
   try {
-    window.runs().setBallCount(count);
+    parts_.runs.setBallCount(count);
   } catch (const SceneError& error) {
-    window.showStatus(QString::fromStdString(error.what()));
-    window.sidebar()->showBallCount(window.runs().group().ballCount());
+    parts_.messages.showStatus(QString::fromStdString(error.what()));
+    parts_.sidebar.showBallCount(parts_.runs.group().ballCount());
     return false;
   }
   if (count != before) {
-    window.undoStack()->clear();  // balls renumbered or gone (MainWindow::undoStack)
-    window.feed().markChange(QObject::tr("%1 balls").arg(count));
+    parts_.undoStack.clear();  // balls renumbered or gone (SceneSession::Parts)
+    parts_.feed.markChange(QObject::tr("%1 balls").arg(count));
   }
-  const double scale = window.runs().group().newBallScale();
+  const double scale = parts_.runs.group().newBallScale();
   if (count > before && scale < 1.0) {
-    window.showStatus(
+    parts_.messages.showStatus(
         QObject::tr("Added %L1 balls at %2 % of the size of the balls there, so that they fit")
             .arg(count - before)
             .arg(100.0 * scale, 0, 'g', 2));
@@ -107,25 +108,26 @@ bool setBallCount(MainWindow& window, std::size_t count) {
   return true;
 }
 
-bool openConfiguration(MainWindow& window, const Configuration& configuration) {
+bool SceneCommands::openConfiguration(const Configuration& configuration) {
   const std::string_view reference = measure::kReferenceBackend;
   const bool hasReference = std::ranges::any_of(
       registeredBackends(), [&](const BackendInfo& info) { return info.name == reference; });
   try {
     createBackend(configuration.spec);  // checks the spec before anything changes
   } catch (const std::invalid_argument& error) {
-    window.showStatus(QString::fromStdString(error.what()));
+    parts_.messages.showStatus(QString::fromStdString(error.what()));
     return false;
   }
-  window.loadScene(configuration.scene, configuration.presetName, configuration.sourceName);
-  RunController& runs = window.runs();
+  parts_.session.loadScene(configuration.scene, configuration.presetName, configuration.sourceName);
+  RunController& runs = parts_.runs;
   while (runs.runCount() > 1)
     runs.removeRun(runs.runCount() - 1);
   runs.setRunSpec(0, configuration.spec);
   if (hasReference && configuration.spec.backend != reference)
     runs.addRun(RunSpec{std::string(reference), {}});
-  window.showStatus(QObject::tr("Opened %1 on %2")
-                        .arg(configuration.sourceName, runs.labels().join(QObject::tr(" vs "))));
+  parts_.messages.showStatus(
+      QObject::tr("Opened %1 on %2")
+          .arg(configuration.sourceName, runs.labels().join(QObject::tr(" vs "))));
   return true;
 }
 

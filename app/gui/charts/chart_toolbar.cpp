@@ -1,0 +1,127 @@
+#include "chart_toolbar.h"
+
+#include <QAction>
+#include <QDoubleSpinBox>
+#include <QSignalBlocker>
+
+#include "toggle_icon.h"
+
+namespace fooball::gui {
+
+namespace {
+
+constexpr double kDefaultWindowSeconds = 20.0;
+
+}  // namespace
+
+ChartToolBar::ChartToolBar(QWidget* parent) : QToolBar(parent) {
+  // Every action here is a switch: a check box beside its name says which are on.
+  setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  setIconSize(QSize(16, 16));
+  const QIcon toggle = toggleIcon();
+
+  wholeRun_ = addAction(tr("Whole run"));
+  wholeRun_->setObjectName(QStringLiteral("wholeRunToggle"));
+  wholeRun_->setCheckable(true);
+  wholeRun_->setIcon(toggle);
+  wholeRun_->setToolTip(
+      tr("Show the whole run (older parts at reduced resolution) instead of a scrolling window"));
+  connect(wholeRun_, &QAction::toggled, this, [this](bool whole) {
+    windowSpin_->setEnabled(!whole);
+    emit wholeRunToggled(whole);
+  });
+
+  windowSpin_ = new QDoubleSpinBox(this);
+  windowSpin_->setObjectName(QStringLiteral("windowSeconds"));
+  windowSpin_->setRange(1.0, 3600.0);
+  windowSpin_->setDecimals(0);
+  windowSpin_->setSuffix(tr(" s"));
+  windowSpin_->setValue(kDefaultWindowSeconds);
+  windowSpin_->setKeyboardTracking(false);
+  windowSpin_->setToolTip(tr("Length of the scrolling window, in seconds of simulated time"));
+  connect(windowSpin_, &QDoubleSpinBox::valueChanged, this, &ChartToolBar::windowSecondsChanged);
+  addWidget(windowSpin_);
+
+  addSeparator();
+  momentumX_ = addQuantityToggle(tr("px"), tr("Momentum, x component: Σ m vx (N·s)"),
+                                 QStringLiteral("momentumXToggle"));
+  momentumY_ = addQuantityToggle(tr("py"), tr("Momentum, y component: Σ m vy (N·s)"),
+                                 QStringLiteral("momentumYToggle"));
+  momentumMagnitude_ =
+      addQuantityToggle(tr("|p|"), tr("Magnitude of the total momentum |Σ m v| (N·s)"),
+                        QStringLiteral("momentumMagnitudeToggle"));
+  addSeparator();
+  kinetic_ = addQuantityToggle(tr("kinetic"), tr("Kinetic energy Σ ½ m|v|² (J)"),
+                               QStringLiteral("kineticToggle"));
+  potential_ = addQuantityToggle(tr("potential"),
+                                 tr("Potential energy Σ −m (g·p), zero at the floor y = 0 (J)"),
+                                 QStringLiteral("potentialToggle"));
+  total_ = addQuantityToggle(tr("total"), tr("Total energy: kinetic + potential (J)"),
+                             QStringLiteral("totalToggle"));
+  addSeparator();
+  residual_ = addQuantityToggle(
+      tr("residual"),
+      tr("Energy budget residual: E(t) − E(0) − work by tools and edits + energy taken by drag. "
+         "What is left is the method's own error (J)"),
+      QStringLiteral("residualToggle"));
+  relativeResidual_ = addQuantityToggle(
+      tr("÷|E₀|"),
+      tr("Show the residual relative to |E₀|, the run's total energy where its budget began "
+         "(load or restart)"),
+      QStringLiteral("relativeResidualToggle"));
+  {
+    const QSignalBlocker blocker(relativeResidual_);  // the toggles are not all there yet
+    relativeResidual_->setChecked(false);
+  }
+  addSeparator();
+  divergence_ = addQuantityToggle(
+      tr("divergence"),
+      tr("RMS position difference of every run from run 0, over balls of the same index (m, log "
+         "scale), and the chaos baseline's (grey, dashed). Shown with two runs or more, or with "
+         "the baseline"),
+      QStringLiteral("divergenceToggle"));
+}
+
+QAction* ChartToolBar::addQuantityToggle(const QString& text, const QString& toolTip,
+                                         const QString& objectName) {
+  QAction* toggle = addAction(text);
+  toggle->setObjectName(objectName);
+  toggle->setToolTip(toolTip);
+  toggle->setCheckable(true);
+  toggle->setChecked(true);
+  toggle->setIcon(toggleIcon());
+  connect(toggle, &QAction::toggled, this, [this] {
+    relativeResidual_->setEnabled(residual_->isChecked());
+    emit shownChanged();
+  });
+  return toggle;
+}
+
+ChartToolBar::Shown ChartToolBar::shown() const {
+  return {momentumX_->isChecked(), momentumY_->isChecked(),        momentumMagnitude_->isChecked(),
+          kinetic_->isChecked(),   potential_->isChecked(),        total_->isChecked(),
+          residual_->isChecked(),  relativeResidual_->isChecked(), divergence_->isChecked()};
+}
+
+bool ChartToolBar::wholeRun() const {
+  return wholeRun_->isChecked();
+}
+
+double ChartToolBar::windowSeconds() const {
+  return windowSpin_->value();
+}
+
+void ChartToolBar::setWholeRun(bool whole) {
+  {
+    const QSignalBlocker blocker(wholeRun_);
+    wholeRun_->setChecked(whole);
+  }
+  windowSpin_->setEnabled(!whole);
+}
+
+void ChartToolBar::setWindowSeconds(double seconds) {
+  const QSignalBlocker blocker(windowSpin_);
+  windowSpin_->setValue(seconds);  // clamped to the spin box's range
+}
+
+}  // namespace fooball::gui
