@@ -258,7 +258,7 @@ TEST_F(Tools, ParetoFrontPointOpensUnderTheMouse) {
   dialog->durationEdit()->setText(QStringLiteral("0.3"));
   runToEnd(dialog);
   QChartView* view = dialog->charts()->views().at(0);  // trajectory errors: none zero
-  QXYSeries* front = nullptr;  // the only series without a legend entry
+  QXYSeries* front = nullptr;                          // the only series without a legend entry
   for (QAbstractSeries* series : view->chart()->series()) {
     if (series->name().isEmpty()) front = qobject_cast<QXYSeries*>(series);
   }
