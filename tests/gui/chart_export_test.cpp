@@ -2,9 +2,11 @@
 // run, so a picture pasted elsewhere still says what it shows.
 
 #include <QImage>
+#include <QSet>
 #include <QTemporaryDir>
 
 #include "gui_fixture.h"
+#include "view/simulation_view.h"
 #include "window/window_actions.h"
 
 namespace fooball::gui::testing {
@@ -31,6 +33,33 @@ TEST_F(ChartExport, CaptionNamesTheSceneAndEveryRun) {
     EXPECT_TRUE(caption.contains(part)) << caption.toStdString() << " lacks " << part.toStdString();
   }
   EXPECT_TRUE(errors.isEmpty());
+}
+
+TEST_F(ChartExport, ImageOfTheBoxIsTheViewAsDrawn) {
+  open(stillBalls(), "elastic", {"exact"});
+  frames(3);
+  QTemporaryDir directory;
+  ASSERT_TRUE(directory.isValid());
+  const QString path = directory.filePath(QStringLiteral("box.png"));
+  ASSERT_TRUE(window->actions().saveBoxImageTo(path));
+  QImage image;
+  ASSERT_TRUE(image.load(path));
+  const QImage drawn = view()->grab().toImage();
+  EXPECT_EQ(image.size(), drawn.size());
+  EXPECT_EQ(image.size(), view()->size() * view()->devicePixelRatio());
+  // Not blank: the box's background, its walls and the balls are more than one colour, and the
+  // pixels are the view's.
+  QSet<QRgb> colours;
+  for (int y = 0; y < image.height(); y += 4) {
+    for (int x = 0; x < image.width(); x += 4)
+      colours.insert(image.pixel(x, y));
+  }
+  EXPECT_GT(colours.size(), 3);
+  EXPECT_EQ(image.convertToFormat(QImage::Format_RGB32),
+            drawn.convertToFormat(QImage::Format_RGB32));
+  EXPECT_FALSE(
+      window->actions().saveBoxImageTo(directory.filePath(QStringLiteral("none/box.png"))));
+  EXPECT_EQ(errors.size(), 1) << "one clear error for a file it cannot write";
 }
 
 }  // namespace

@@ -6,6 +6,10 @@
 #include <QChartView>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QFile>
+#include <QGraphicsTextItem>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -14,18 +18,28 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScatterSeries>
+#include <QSet>
+#include <QTableWidget>
 #include <QXYSeries>
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <memory>
 
+#include "capacity_chart_builder.h"
 #include "chart_image.h"
+#include "charts/chart_panel.h"
+#include "control/scene_commands.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
+#include "registry.h"
+#include "tools/benchmark_dialog.h"
 #include "tools/failure_map_dialog.h"
 #include "tools/measured_charts.h"
 #include "tools/tool_run_panel.h"
 #include "tools/tradeoff_dialog.h"
+#include "tradeoff_chart_builder.h"
+#include "widgets/dark_theme.h"
 #include "window/window_actions.h"
 
 namespace fooball::gui::testing {
@@ -47,6 +61,32 @@ QXYSeries* seriesNamed(QChartView* view, const QString& name) {
       return qobject_cast<QXYSeries*>(series);
   }
   return nullptr;
+}
+
+/// The texts `view` draws (title, axis labels and titles, legend entries) that Qt shortened
+/// with an ellipsis to fit ("box2d: 5250…", "…exact run at 0…").
+QStringList elidedTexts(const QChartView& view) {
+  QStringList elided;
+  for (QGraphicsItem* item : view.scene()->items()) {
+    const auto* text = qobject_cast<const QGraphicsTextItem*>(item->toGraphicsObject());
+    if (text == nullptr || !item->isVisible()) continue;
+    const QString shown = text->toPlainText();
+    if (shown.contains(QChar(0x2026)) || shown.contains(QStringLiteral("..."))) elided << shown;
+  }
+  return elided;
+}
+
+/// Every text of `dialog`'s charts whole at the window sizes of a small and a common screen.
+void expectNothingElided(QWidget& dialog, const std::vector<QChartView*>& views) {
+  for (const QSize size : {QSize(1000, 650), QSize(1440, 900)}) {
+    dialog.resize(size);
+    QCoreApplication::processEvents();
+    for (QChartView* view : views) {
+      EXPECT_EQ(elidedTexts(*view), QStringList())
+          << "dialog " << dialog.width() << "×" << dialog.height() << ", chart '"
+          << view->chart()->title().toStdString() << "'";
+    }
+  }
 }
 
 class Tools : public GuiTest {
@@ -75,6 +115,14 @@ class Tools : public GuiTest {
     const QPointF offset =
         chart->mapToValue(chart->mapToPosition(value, series) + QPointF(1, 1), series);
     dialog->charts()->pointClicked(series, offset);
+  }
+  /// Clicks the pixel where `series`' point `index` is drawn, with the mouse on the chart view.
+  static void mouseClickPoint(QChartView* view, QXYSeries* series, int index) {
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(view->window()));
+    QCoreApplication::processEvents();  // the new chart's layout: its plot area
+    const QPointF inScene =
+        series->chart()->mapToScene(series->chart()->mapToPosition(series->at(index), series));
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->mapFromScene(inScene));
   }
   /// The point of `series` furthest on screen from its nearest neighbour. The tradeoff's x is
   /// measured CPU time, so two settings that cost about the same (small substep counts, where
@@ -197,6 +245,149 @@ TEST_F(Tools, TradeoffPointOpensItsSettingAgainstTheReference) {
   for (std::size_t i = 0; i < loaded.balls.size(); ++i) {
     EXPECT_EQ(loaded.balls[i].position, headOn.balls[i].position);
     EXPECT_EQ(loaded.balls[i].velocity, headOn.balls[i].velocity);
+  }
+}
+
+TEST_F(Tools, ParetoFrontPointOpensUnderTheMouse) {
+  // The front is drawn over the points on it: a click there reached the line, which opened
+  // nothing.
+  open(stillBalls());
+  TradeoffDialog* dialog = openTradeoff();
+  dialog->presetBox()->setCurrentText(QStringLiteral("gas"));
+  checkOnly(dialog->backendList(), {QStringLiteral("elastic")});
+  dialog->durationEdit()->setText(QStringLiteral("0.3"));
+  runToEnd(dialog);
+  QChartView* view = dialog->charts()->views().at(0);  // trajectory errors: none zero
+  QXYSeries* front = nullptr;                          // the only series without a legend entry
+  for (QAbstractSeries* series : view->chart()->series()) {
+    if (series->name().isEmpty()) front = qobject_cast<QXYSeries*>(series);
+  }
+  ASSERT_NE(front, nullptr);
+  ASSERT_GE(front->count(), 2) << "a front of several settings";
+  const int index = mostIsolatedPoint(front);
+  const double cost = front->at(index).x();
+  const auto point = std::ranges::find_if(dialog->points(), [&](const auto& measured) {
+    return measured.cpuMsPerSimulatedSecond == cost;
+  });
+  ASSERT_NE(point, dialog->points().end());
+  mouseClickPoint(view, front, index);
+  ASSERT_EQ(runs().runCount(), 2) << "the front point opened against the reference";
+  EXPECT_EQ(runs().group().spec(0), (RunSpec{point->setting.backend, point->setting.options}));
+}
+
+TEST_F(Tools, CircledFailingPointOpensUnderTheMouse) {
+  // The circles are drawn over the curves' points: a click there opened nothing.
+  open(stillBalls());
+  FailureMapDialog* dialog = openFailureMap();
+  checkOnly(dialog->sweepList(), {QStringLiteral("tunnelling")});
+  checkOnly(dialog->backendList(), {QStringLiteral("xpbd")});
+  runToEnd(dialog);
+  QChartView* view = dialog->charts()->views().at(0);
+  QXYSeries* failing = seriesNamed(view, QStringLiteral("failing point"));
+  ASSERT_NE(failing, nullptr);
+  ASSERT_GE(failing->count(), 1) << "xpbd tunnels at the sweep's fastest balls";
+  const int index = mostIsolatedPoint(failing);
+  const double parameter = failing->at(index).x();
+  mouseClickPoint(view, failing, index);
+  ASSERT_GE(runs().runCount(), 1);
+  EXPECT_EQ(runs().group().spec(0).backend, "xpbd") << "the circled point opened";
+  const auto opened = std::ranges::find_if(dialog->shownPoints(), [&](const auto& point) {
+    return point.parameter == parameter &&
+           point.scene.balls.size() == runs().group().loadedScene().balls.size() &&
+           point.scene.balls.front().velocity ==
+               runs().group().loadedScene().balls.front().velocity;
+  });
+  EXPECT_NE(opened, dialog->shownPoints().end()) << "the scene of the circled point";
+}
+
+TEST_F(Tools, OpenedPointRenamesTheChartsRuns) {
+  // The charts kept the runs shown before: the legend called chipmunk
+  // "box2d:substeps=64,velocity_iterations=2 (reference)".
+  open(stillBalls(), "box2d:substeps=64,velocity_iterations=2", {"exact", "xpbd"});
+  const QString csvPath = QDir::temp().filePath(QStringLiteral("fooball_opened_names.csv"));
+  ASSERT_TRUE(window->scenes().openConfiguration(
+      {stillBalls(), QString(), QStringLiteral("test"), RunSpec{"chipmunk", {}}}));
+  frames(3);
+  ChartPanel* charts = window->charts();
+  charts->refresh();
+  ASSERT_EQ(charts->runCount(), 2);
+  EXPECT_EQ(charts->data().runName(0), QStringLiteral("chipmunk"));
+  EXPECT_EQ(charts->data().runName(1), QStringLiteral("exact"));
+  // The PNG draws this legend above the charts.
+  const QString legend = charts->runLegend().text();
+  EXPECT_TRUE(legend.contains(QStringLiteral("chipmunk&nbsp;(reference)"))) << legend.toStdString();
+  EXPECT_FALSE(legend.contains(QStringLiteral("box2d"))) << legend.toStdString();
+  EXPECT_FALSE(legend.contains(QStringLiteral("xpbd"))) << legend.toStdString();
+  ASSERT_TRUE(charts->exportCsv(csvPath));
+  QFile csv(csvPath);
+  ASSERT_TRUE(csv.open(QIODevice::ReadOnly));
+  QSet<QString> runNames;
+  csv.readLine();  // the header
+  while (!csv.atEnd())
+    runNames.insert(QString::fromUtf8(csv.readLine()).section(QLatin1Char(','), 0, 0));
+  EXPECT_EQ(runNames, (QSet<QString>{QStringLiteral("chipmunk"), QStringLiteral("exact"),
+                                     QStringLiteral("baseline")}));
+  csv.remove();
+}
+
+TEST_F(Tools, TradeoffLabelsAreWhole) {
+  // Before: the trajectory axis' title read "…exact run at 0…", and nine backends' legend
+  // entries were shortened.
+  open(stillBalls());
+  TradeoffDialog* dialog = openTradeoff();
+  std::vector<measure::TradeoffPoint> points;
+  double cost = 1.0;
+  for (const BackendInfo& backend : registeredBackends()) {
+    for (const int substeps : {1, 4, 16}) {
+      measure::TradeoffPoint point;
+      point.setting = {std::string(backend.name), {"substeps=" + std::to_string(substeps)}};
+      point.cpuMsPerSimulatedSecond = cost *= 1.7;
+      point.trajectoryError = 0.3 / substeps;
+      point.energyError = 1e-3 / substeps;
+      points.push_back(point);
+    }
+  }
+  const measure::TradeoffSettings settings;
+  dialog->charts()->showCharts(plots::makeTradeoffCharts(points, settings),
+                               plots::tradeoffChartTitle("'gas' (300 balls)", settings));
+  expectNothingElided(*dialog, dialog->charts()->views());
+}
+
+TEST_F(Tools, BenchmarkLabelsAndTableAreWhole) {
+  // Before: the legend read "box2d: 5250…", and the table showed two and a half rows.
+  open(stillBalls());
+  window->actions().benchmark()->trigger();
+  BenchmarkDialog* dialog = window->actions().benchmarkDialog();
+  auto* view = dialog->findChild<QChartView*>();
+  ASSERT_NE(view, nullptr);
+  std::vector<measure::CapacityResult> results;
+  QTableWidget* table = dialog->resultsTable();
+  for (const BackendInfo& backend : registeredBackends()) {
+    measure::CapacityResult result;
+    result.backend = backend.name;
+    result.outcome.balls = 5250 + 1000 * results.size();
+    result.outcome.medianStepMs = 15.0;
+    result.outcome.probes = {{1000, 2.0}, {result.outcome.balls, 15.0}};
+    results.push_back(result);
+    const int row = table->rowCount();
+    table->setRowCount(row + 1);
+    table->setItem(row, 0, new QTableWidgetItem(QString::fromUtf8(backend.name)));
+  }
+  QChart* chart = plots::makeCapacityChart(results, measure::CapacitySettings{});
+  styleChartDark(*chart);
+  delete view->chart();
+  view->setChart(chart);
+  expectNothingElided(*dialog, {view});
+  for (const QSize size : {QSize(1000, 650), QSize(1440, 900)}) {
+    dialog->resize(size);
+    QCoreApplication::processEvents();
+    // All the rows, or whole rows and a scroll bar.
+    const int rows = table->verticalHeader()->length();
+    const int shown = table->viewport()->height();
+    const int rowHeight = table->verticalHeader()->defaultSectionSize();
+    EXPECT_TRUE(shown >= rows || shown % rowHeight == 0)
+        << "dialog " << dialog->width() << "×" << dialog->height() << ": " << shown
+        << " px of table for " << rows << " px of rows";
   }
 }
 

@@ -125,6 +125,8 @@ bool SceneCommands::openConfiguration(const Configuration& configuration) {
   runs.setRunSpec(0, configuration.spec);
   if (hasReference && configuration.spec.backend != reference)
     runs.addRun(RunSpec{std::string(reference), {}});
+  // Loading restarted the charts with the runs shown before: start them over with these.
+  parts_.session.restartCharts();
   parts_.messages.showStatus(
       QObject::tr("Opened %1 on %2")
           .arg(configuration.sourceName, runs.labels().join(QObject::tr(" vs "))));

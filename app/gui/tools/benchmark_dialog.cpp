@@ -17,6 +17,7 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -118,6 +119,15 @@ QWidget* BenchmarkDialog::createResults() {
   table_->setToolTip(
       tr("Each backend's capacity: the most balls whose median step fits the "
          "budget, and that step's cost"));
+  // Every row on show (a row per backend): the splitter's first share showed two and a half.
+  const auto fitRows = [this] {
+    const int rows = std::max(table_->rowCount(), 1);
+    table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() +
+                             rows * table_->verticalHeader()->defaultSectionSize() +
+                             2 * table_->frameWidth());
+  };
+  connect(table_->model(), &QAbstractItemModel::rowsInserted, this, fitRows);
+  connect(table_->model(), &QAbstractItemModel::rowsRemoved, this, fitRows);
 
   chartView_ = new QChartView;
   chartView_->setRenderHint(QPainter::Antialiasing);

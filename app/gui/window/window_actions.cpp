@@ -150,6 +150,7 @@ void WindowActions::createMenus() {
                   &WindowActions::exportChartsPng);
   file->addAction(tr("Export charts as &CSV…"), QKeySequence(tr("Ctrl+Shift+E")), this,
                   &WindowActions::exportChartsCsv);
+  file->addAction(tr("Save &image of the box…"), this, &WindowActions::saveBoxImage);
   record_ = file->addAction(tr("&Record…"), this, &WindowActions::openRecord);
   record_->setToolTip(
       tr("Record the box, or the box and the charts, to MP4, WebM or an animated GIF"));
@@ -278,6 +279,22 @@ bool WindowActions::exportChartsPngTo(const QString& path) {
     return false;
   }
   parts_.messages.showStatus(tr("Charts saved to %1").arg(path));
+  return true;
+}
+
+void WindowActions::saveBoxImage() {
+  const QString path = QFileDialog::getSaveFileName(&parts_.window, tr("Save image of the box"),
+                                                    QString(), tr("PNG images (*.png)"));
+  if (!path.isEmpty()) saveBoxImageTo(path);
+}
+
+bool WindowActions::saveBoxImageTo(const QString& path) {
+  if (!parts_.view.grab().save(path, "PNG")) {
+    parts_.messages.reportError(tr("Could not save the image of the box"),
+                                tr("Could not write %1").arg(path));
+    return false;
+  }
+  parts_.messages.showStatus(tr("Image of the box saved to %1").arg(path));
   return true;
 }
 

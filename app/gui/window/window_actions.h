@@ -95,6 +95,9 @@ class WindowActions : public QObject {
   /// File → Export charts as PNG to `path`, under a caption naming the scene and the runs; says
   /// how it went in the status bar or an error.
   bool exportChartsPngTo(const QString& path);
+  /// File → Save image of the box to `path`: the simulation view as drawn, as PNG; says how it
+  /// went in the status bar or an error.
+  bool saveBoxImageTo(const QString& path);
   /// The caption: "FooBall — gas, 300 balls, t = 6.00 s — runs: elastic (reference), exact".
   QString chartCaption() const;
 
@@ -115,6 +118,7 @@ class WindowActions : public QObject {
   void saveSceneDialog();
   void exportChartsPng();
   void exportChartsCsv();
+  void saveBoxImage();
   void openBenchmark();
   void openTradeoff();
   void openFailureMap();

@@ -29,8 +29,9 @@ QString countText(std::size_t balls) {
 
 QChart* makeCapacityChart(std::span<const measure::CapacityResult> results,
                           const measure::CapacitySettings& settings) {
+  // The legend beside the plot: in a row under it, Qt shortened the entries ("box2d: 5250…").
   auto* chart = new QChart;
-  chart->legend()->setAlignment(Qt::AlignBottom);
+  chart->legend()->setAlignment(Qt::AlignRight);
 
   double leastBalls = std::numeric_limits<double>::infinity();
   double mostBalls = 1.0;

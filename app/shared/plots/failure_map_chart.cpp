@@ -115,6 +115,8 @@ QChart* panel(const SweepSpec& spec, std::span<const SweepPoint> points, const M
   failing->setMarkerSize(11.0);
   failing->setColor(Qt::transparent);
   failing->setBorderColor(QColor(0xd0, 0x30, 0x30));
+  // The circles are drawn over the curves' points and take their clicks: they open them too.
+  std::vector<std::size_t> failingMeasured;
   for (const auto& [backend, variant] : curvesOf(points)) {
     auto* line = new QLineSeries;
     line->setName(QString::fromStdString(variant.empty() ? backend : backend + ", " + variant));
@@ -130,12 +132,15 @@ QChart* panel(const SweepSpec& spec, std::span<const SweepPoint> points, const M
     for (const SweepPoint* point : curve) {
       line->append(point->parameter, shown(point->*measure.field));
       measured.push_back(static_cast<std::size_t>(point - points.data()));
-      if (!(point->*measure.field <= measure.limit))
+      if (!(point->*measure.field <= measure.limit)) {
         failing->append(point->parameter, shown(point->*measure.field));
+        failingMeasured.push_back(measured.back());
+      }
     }
     tagMeasurements(*line, measured);
     add(line, true);
   }
+  tagMeasurements(*failing, failingMeasured);
   add(failing, true);
   return chart;
 }

@@ -16,7 +16,7 @@ void tagMeasurements(QXYSeries& series, const std::vector<std::size_t>& indices)
 
 /// The measurement behind the point of `series` nearest `clicked` (in the axes' values, as
 /// QXYSeries::clicked gives it), measured in pixels on the chart; none for a series without
-/// measurements (a threshold line, a Pareto front).
+/// measurements (a threshold line).
 std::optional<std::size_t> measurementAt(const QXYSeries& series, QPointF clicked);
 
 }  // namespace fooball::plots

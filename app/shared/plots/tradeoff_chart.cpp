@@ -55,8 +55,10 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
   if (!std::isfinite(leastCost)) leastCost = mostCost = 1.0;
   const auto shown = [&](double error) { return error > 0.0 ? error : zeroAt; };
 
+  // The legend beside the plot: in a row under it, Qt shortens every entry to "…" once the
+  // backends' names do not fit the panel's width.
   auto* chart = new QChart;
-  chart->legend()->setAlignment(Qt::AlignBottom);
+  chart->legend()->setAlignment(Qt::AlignRight);
   QLogValueAxis* xAxis = decadeAxis("CPU ms per simulated second", leastCost, mostCost, "%.0e");
   QLogValueAxis* yAxis = decadeAxis(axis.title, zeroAt, std::max(mostError, zeroAt), "%.0e");
   chart->addAxis(xAxis, Qt::AlignBottom);
@@ -85,10 +87,15 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
     }
     tagMeasurements(*scatter, measured);
     add(scatter, true);
+    // The front is drawn over its points and takes their clicks: it opens them as they would.
     auto* front = new QLineSeries;
     front->setPen(QPen(colours::backendColour(backend), 2.0));
-    for (const std::size_t i : measure::paretoFront(own))
+    std::vector<std::size_t> onFront;
+    for (const std::size_t i : measure::paretoFront(own)) {
       front->append(own[i].cost, shown(own[i].error));
+      onFront.push_back(measured[i]);
+    }
+    tagMeasurements(*front, onFront);
     add(front, false);
   }
   return chart;
@@ -98,10 +105,12 @@ QChart* panel(std::span<const measure::TradeoffPoint> points, const ErrorAxis& a
 
 std::vector<QChart*> makeTradeoffCharts(std::span<const measure::TradeoffPoint> points,
                                         const measure::TradeoffSettings& settings) {
-  const QString trajectory = QString("RMS distance from the %1 run at %2 s (m)")
+  // On two lines: a title up the side of a plot longer than its height is cut at both ends.
+  const QString trajectory = QString("RMS distance from %1<br>at %2 s (m)")
                                  .arg(QString::fromUtf8(measure::kReferenceBackend))
                                  .arg(settings.compareAt);
-  const QString energy = QString("largest energy error in %1 s (relative)").arg(settings.duration);
+  const QString energy =
+      QString("largest energy error<br>in %1 s (relative)").arg(settings.duration);
   return {panel(points, {&measure::TradeoffPoint::trajectoryError, trajectory}),
           panel(points, {&measure::TradeoffPoint::energyError, energy})};
 }
