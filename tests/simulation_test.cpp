@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,7 +31,7 @@ using testing::ball;
 using testing::emptyBox;
 using testing::gas;
 
-constexpr double kDt = 1.0 / 60.0;  // s, the default step
+constexpr double kDt = kDefaultDt;  // s, the default step
 
 /// Three balls of different sizes, masses and colours, apart from each other and the walls.
 Scene threeBalls() {
@@ -122,6 +123,21 @@ TEST(Simulation, ChangingDtMidRunContinuesTimeFromWhereItWas) {
   simulation.setDt(0.01);
   simulation.run(0.05);
   EXPECT_EQ(simulation.time(), (before + 25.0 * fineDt) + 5.0 * 0.01);
+}
+
+TEST(Simulation, ASceneRunsAtItsOwnTimeStepAndReportsIt) {
+  Scene scene = threeBalls();
+  scene.dt = 0.002;
+  Simulation simulation = elasticSimulation(scene);
+  EXPECT_EQ(simulation.dt(), 0.002);
+  EXPECT_EQ(simulation.scene().dt, std::optional<double>(0.002)) << "saved with the scene";
+  simulation.setDt(kDefaultDt);
+  EXPECT_FALSE(simulation.scene().dt) << "the default step is not written";
+  simulation.load(threeBalls());
+  EXPECT_EQ(simulation.dt(), kDefaultDt);
+  scene.dt = 0.004;
+  simulation.load(scene);
+  EXPECT_EQ(simulation.dt(), 0.004) << "a load takes the scene's step";
 }
 
 TEST(Simulation, SetDtRejectsNonPositiveAndNonFiniteSteps) {
