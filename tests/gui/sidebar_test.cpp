@@ -9,6 +9,7 @@
 #include <QWheelEvent>
 
 #include "control/scene_commands.h"
+#include "control/scene_session.h"
 #include "fooball/scene_file.h"
 #include "gui_fixture.h"
 #include "readouts/run_counters.h"
