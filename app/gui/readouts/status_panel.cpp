@@ -35,9 +35,14 @@ QString wrappedToolTip(const QStringList& paragraphs) {
   return html;
 }
 
-/// Shows `text` in `label`, cut short with "…" past `width` px (the tooltip has it whole).
-void setFittedText(QLabel& label, const QString& text, int width) {
-  label.setText(label.fontMetrics().elidedText(text, Qt::ElideRight, width));
+/// A notice: `heading` (with "%1" for `items`, joined by `separator`), cut short with "…" past
+/// kNoticeWidth, and `explanations` in its tooltip; hidden when there are no items.
+void showNotice(QLabel& notice, const QString& heading, const QStringList& items,
+                const QString& separator, const QStringList& explanations) {
+  notice.setVisible(!items.isEmpty());
+  notice.setText(notice.fontMetrics().elidedText(heading.arg(items.join(separator)), Qt::ElideRight,
+                                                 kNoticeWidth));
+  notice.setToolTip(wrappedToolTip(explanations));
 }
 
 }  // namespace
@@ -133,10 +138,7 @@ void StatusPanel::showCutShortSteps() {
     runsCut << runName(i);
     notices << labels[i] + QStringLiteral(": ") + QString::fromStdString(notice);
   }
-  cutShort_->setVisible(!notices.isEmpty());
-  setFittedText(*cutShort_, tr("⚠ steps cut short: %1").arg(runsCut.join(QStringLiteral(", "))),
-                kNoticeWidth);
-  cutShort_->setToolTip(wrappedToolTip(notices));
+  showNotice(*cutShort_, tr("⚠ steps cut short: %1"), runsCut, QStringLiteral(", "), notices);
 }
 
 void StatusPanel::showEnergyErrors() {
@@ -173,10 +175,7 @@ void StatusPanel::showEnergyErrors() {
     }
     explanations << explanation;
   }
-  energy_->setVisible(!shown.isEmpty());
-  setFittedText(*energy_, tr("⚠ energy error: %1").arg(shown.join(QStringLiteral(", "))),
-                kNoticeWidth);
-  energy_->setToolTip(wrappedToolTip(explanations));
+  showNotice(*energy_, tr("⚠ energy error: %1"), shown, QStringLiteral(", "), explanations);
 }
 
 void StatusPanel::showCrossedLimits() {
@@ -208,10 +207,7 @@ void StatusPanel::showCrossedLimits() {
                   ? tr("%1 (run %2)").arg(limitNames[qsizetype(k)], indices.front())
                   : tr("%1 (runs %2)").arg(limitNames[qsizetype(k)], indices.join(", ")));
   }
-  limits_->setVisible(!parts.isEmpty());
-  setFittedText(*limits_, tr("⚠ beyond method limits: %1").arg(parts.join(QStringLiteral("; "))),
-                kNoticeWidth);
-  limits_->setToolTip(wrappedToolTip(explanations));
+  showNotice(*limits_, tr("⚠ beyond method limits: %1"), parts, QStringLiteral("; "), explanations);
 }
 
 }  // namespace fooball::gui
