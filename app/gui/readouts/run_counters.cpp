@@ -15,9 +15,9 @@ namespace {
 
 const QString kNoFigure = QStringLiteral("—");
 // The widest figure each column keeps room for, so the sidebar (fitted to its controls) keeps
-// its width however the counts grow: 10 billion collisions (hours of 10,000 balls), every
+// its width as the counts grow, up to a billion collisions (minutes of 100,000 balls), every
 // ball of the largest scene out, an overlap of a whole radius and more.
-constexpr std::uint64_t kWidestCollisions = 9'999'999'999;
+constexpr std::uint64_t kWidestCollisions = 999'999'999;
 constexpr std::uint64_t kWidestEscaped = 9'999'999;
 const QString kWidestOverlap = QStringLiteral("<0.01 %");
 
