@@ -15,10 +15,10 @@ namespace {
 
 const QString kNoFigure = QStringLiteral("—");
 // The widest figure each column keeps room for, so the sidebar (fitted to its controls) keeps
-// its width as the counts grow, up to a billion collisions (minutes of 100,000 balls), every
+// its width as the counts grow, up to 100 million collisions (a minute of 100,000 balls), every
 // ball of the largest scene out, an overlap of a whole radius and more.
-constexpr std::uint64_t kWidestCollisions = 999'999'999;
-constexpr std::uint64_t kWidestEscaped = 9'999'999;
+constexpr std::uint64_t kWidestCollisions = 99'999'999;
+constexpr std::uint64_t kWidestEscaped = 1'000'000;  // the app's ball limit
 const QString kWidestOverlap = QStringLiteral("<0.01 %");
 
 QLabel* rightAligned(const QString& text, const QString& toolTip) {
@@ -61,7 +61,7 @@ RunCounters::RunCounters(QWidget* parent)
     : QGroupBox(tr("Counters"), parent), grid_(new QGridLayout(this)) {
   setObjectName(QStringLiteral("runCounters"));
   setToolTip(tr("Since the scene was loaded or restarted, per run: what fooball-cli run reports"));
-  grid_->setHorizontalSpacing(6);
+  grid_->setHorizontalSpacing(3);
   grid_->setVerticalSpacing(2);
   const QStringList headers{tr("ball–ball"), tr("wall"), tr("overlap"), tr("out")};
   const QStringList toolTips{
