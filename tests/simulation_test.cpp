@@ -246,12 +246,13 @@ TEST(Simulation, LoadAtAStartTimeKeepsTheClockGoingAndStartsTheRestAgain) {
   Simulation simulation = elasticSimulation(threeBalls());
   simulation.run(5.0);
   ASSERT_GT(simulation.counters().wallCollisions, 0u);
-  const Scene now = simulation.scene();
   simulation.setDt(0.01);
+  const Scene now = simulation.scene();
+  simulation.setDt(0.02);
   simulation.load(now, 5.0);
   EXPECT_EQ(simulation.time(), 5.0);
   EXPECT_EQ(simulation.steps(), 0u);
-  EXPECT_EQ(simulation.dt(), 0.01) << "the step stays";
+  EXPECT_EQ(simulation.dt(), 0.01) << "the step comes with the state (Scene::dt)";
   EXPECT_EQ(simulation.counters().wallCollisions, 0u);
   EXPECT_EQ(simulation.metrics().time, 5.0);
   EXPECT_EQ(simulation.metrics().energyResidual, 0.0);
