@@ -16,7 +16,7 @@ namespace fooball::gui {
 /// bounces since the scene was loaded, the deepest overlap now (ball–ball or ball–wall, as a
 /// fraction of the smaller radius) and the balls whose centre is outside the box — what
 /// `fooball-cli run` reports, for every run of the group. Its width does not grow with the
-/// counts.
+/// counts up to 100 million collisions.
 class RunCounters : public QGroupBox {
   Q_OBJECT
 
