@@ -464,12 +464,23 @@ TEST(Interactions, ForgetBallsClearsTargetsSelectionAndPendingLaunch) {
   expectAllZero(forcesOf(tools, balls));
 }
 
-TEST(Interactions, NearestBallIsTheClosestCentre) {
+TEST(Interactions, NearestBallIsTheClosestEdge) {
   const TestBalls balls = threeBalls();
-  EXPECT_EQ(nearestBall({7.0, 4.0}, balls.positions), 1u);
-  EXPECT_EQ(nearestBall({100.0, -50.0}, balls.positions), 2u);
-  EXPECT_EQ(nearestBall({2.0, 2.0}, balls.positions), 0u);
-  EXPECT_FALSE(nearestBall({1.0, 1.0}, {}));
+  EXPECT_EQ(nearestBall({7.0, 4.0}, balls.positions, balls.radii), 1u);
+  EXPECT_EQ(nearestBall({100.0, -50.0}, balls.positions, balls.radii), 2u);
+  EXPECT_EQ(nearestBall({2.0, 2.0}, balls.positions, balls.radii), 0u);
+  EXPECT_FALSE(nearestBall({1.0, 1.0}, {}, {}));
+}
+
+TEST(Interactions, NearestBallIsTheOneUnderThePointBesideASmallerCloserCentre) {
+  // Pressed 1.9 m from a big ball's centre, inside it; a small ball's centre is 1.4 m away.
+  const std::vector<Vec2> positions{{5.0, 4.5}, {8.3, 4.5}};
+  const std::vector<double> radii{2.0, 0.1};
+  EXPECT_EQ(nearestBall({6.9, 4.5}, positions, radii), 0u);
+  // Outside both: the nearer edge (0.75 m to the big one's, 1.7 m to the small one's), though
+  // the small one's centre is nearer (1.8 m against 2.7 m).
+  EXPECT_EQ(nearestBall({7.3, 3.0}, positions, radii), 0u);
+  EXPECT_EQ(nearestBall({8.3, 4.0}, positions, radii), 1u);
 }
 
 }  // namespace

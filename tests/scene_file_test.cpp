@@ -14,6 +14,7 @@
 #include <iterator>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -134,6 +135,20 @@ TEST(SceneFileReading, OnlyFormatVersionAndBoxAreRequiredAndTheRestDefaults) {
   EXPECT_EQ(scene.world.airResistance, 0.0);
   EXPECT_TRUE(scene.world.ballCollisions);
   EXPECT_TRUE(scene.balls.empty());
+  EXPECT_FALSE(scene.dt) << "the default step, kDefaultDt";
+}
+
+TEST(SceneFileReading, TheTimeStepIsReadWrittenAndChecked) {
+  const Scene scene = parseScene(sceneWith(R"("dt": 0.001)"), "scene.json");
+  EXPECT_EQ(scene.dt, std::optional<double>(0.001));
+  EXPECT_EQ(parseScene(writeScene(scene), "again.json").dt, std::optional<double>(0.001));
+  EXPECT_EQ(writeScene(parseScene(sceneWith(), "scene.json")).find("\"dt\""), std::string::npos)
+      << "a scene at the default step is written as before";
+  EXPECT_EQ(errorFrom(sceneWith(R"("dt": 0)")), "scene.json: dt: must be > 0 (got 0)");
+  EXPECT_EQ(errorFrom(sceneWith(R"("dt": -0.01)")), "scene.json: dt: must be > 0 (got -0.01)");
+  EXPECT_EQ(errorFrom(sceneWith(R"("dt": "fast")")).rfind("scene.json: dt: must be a number", 0),
+            0u)
+      << errorFrom(sceneWith(R"("dt": "fast")"));
 }
 
 TEST(SceneFileReading, BallNeedsPositionAndRadiusOnlyVelocityMassAndColorDefault) {
@@ -306,7 +321,7 @@ TEST(SceneFileErrors, VersionIsCheckedBeforeUnknownKeys) {
 TEST(SceneFileErrors, UnknownTopLevelKeyIsNamedWithTheKnownKeys) {
   EXPECT_EQ(errorFrom(sceneWith(R"("gravty": [0, -9.81])")),
             R"(scene.json: unknown key "gravty" (known keys: format, version, name, box, walls, )"
-            R"(gravity, air_resistance, ball_collisions, balls, random_balls, saved_from))");
+            R"(gravity, air_resistance, ball_collisions, dt, balls, random_balls, saved_from))");
 }
 
 TEST(SceneFileErrors, UnknownKeysInNestedObjectsAreNamed) {
@@ -337,7 +352,7 @@ TEST(SceneFileErrors, RepeatedKeyIsAnErrorNotLastOneWins) {
 TEST(SceneFileErrors, UnknownKeysAreShownPrintable) {
   EXPECT_EQ(errorFrom(sceneWith("\"a\\u0001b\": 1")),
             R"(scene.json: unknown key "a\x01b" (known keys: format, version, name, box, walls, )"
-            R"(gravity, air_resistance, ball_collisions, balls, random_balls, saved_from))");
+            R"(gravity, air_resistance, ball_collisions, dt, balls, random_balls, saved_from))");
 }
 
 // --- Errors: JSON types ------------------------------------------------------------------------

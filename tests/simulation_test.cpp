@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -108,6 +109,21 @@ TEST(Simulation, ChangingDtMidRunContinuesTimeFromWhereItWas) {
   simulation.setDt(0.01);
   simulation.run(0.05);
   EXPECT_EQ(simulation.time(), (before + 25.0 * fineDt) + 5.0 * 0.01);
+}
+
+TEST(Simulation, ASceneRunsAtItsOwnTimeStepAndReportsIt) {
+  Scene scene = threeBalls();
+  scene.dt = 0.002;
+  Simulation simulation = elasticSimulation(scene);
+  EXPECT_EQ(simulation.dt(), 0.002);
+  EXPECT_EQ(simulation.scene().dt, std::optional<double>(0.002)) << "saved with the scene";
+  simulation.setDt(kDefaultDt);
+  EXPECT_FALSE(simulation.scene().dt) << "the default step is not written";
+  simulation.load(threeBalls());
+  EXPECT_EQ(simulation.dt(), kDefaultDt);
+  scene.dt = 0.004;
+  simulation.load(scene);
+  EXPECT_EQ(simulation.dt(), 0.004) << "a load takes the scene's step";
 }
 
 TEST(Simulation, SetDtRejectsNonPositiveAndNonFiniteSteps) {
@@ -216,12 +232,13 @@ TEST(Simulation, LoadAtAStartTimeKeepsTheClockGoingAndStartsTheRestAgain) {
   Simulation simulation = elasticSimulation(threeBalls());
   simulation.run(5.0);
   ASSERT_GT(simulation.counters().wallCollisions, 0u);
-  const Scene now = simulation.scene();
   simulation.setDt(0.01);
+  const Scene now = simulation.scene();
+  simulation.setDt(0.02);
   simulation.load(now, 5.0);
   EXPECT_EQ(simulation.time(), 5.0);
   EXPECT_EQ(simulation.steps(), 0u);
-  EXPECT_EQ(simulation.dt(), 0.01) << "the step stays";
+  EXPECT_EQ(simulation.dt(), 0.01) << "the step comes with the state (Scene::dt)";
   EXPECT_EQ(simulation.counters().wallCollisions, 0u);
   EXPECT_EQ(simulation.metrics().time, 5.0);
   EXPECT_EQ(simulation.metrics().energyResidual, 0.0);

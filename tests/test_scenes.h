@@ -32,7 +32,7 @@ inline Scene emptyBox(double width = 16.0, double height = 9.0) {
 }
 
 /// `count` random balls (radius 0.1–0.2 m, speed 0.5–3 m/s) in a 16 × 9 m box.
-inline constexpr double kDt = 1.0 / 60.0;  ///< s, the default step
+inline constexpr double kDt = kDefaultDt;  ///< s, the default step
 /// Relative: the error of a few dozen double operations.
 inline constexpr double kRounding = 1e-12;
 

@@ -60,9 +60,10 @@ void addRunFlags(CLI::App& run, RunOptions& options, RunFlags& flags) {
                  "and with --save write it back unchanged)")
       ->type_name("SECONDS")
       ->capture_default_str();
-  flags.dtFlag = run.add_option("--dt", flags.dt,
-                                "physics time step in seconds (default: the engine's fixed step)")
-                     ->type_name("SECONDS");
+  flags.dtFlag =
+      run.add_option("--dt", flags.dt,
+                     "physics time step in seconds (default: the scene's dt, else 1/60 s)")
+          ->type_name("SECONDS");
   flags.substepsFlag =
       run.add_option("--substeps", flags.substeps, "the same as --option substeps=N")
           ->type_name("N");
@@ -116,10 +117,11 @@ void addCompareFlags(CLI::App& compare, CompareOptions& options, CompareFlags& f
   compare.add_option("--duration", options.duration, "simulated time to run, in seconds")
       ->type_name("SECONDS")
       ->capture_default_str();
-  flags.dtFlag = compare
-                     .add_option("--dt", flags.dt,
-                                 "physics time step in seconds (default: the engine's fixed step)")
-                     ->type_name("SECONDS");
+  flags.dtFlag =
+      compare
+          .add_option("--dt", flags.dt,
+                      "physics time step in seconds (default: the scene's dt, else 1/60 s)")
+          ->type_name("SECONDS");
   compare.add_option("--every", options.every, "steps between CSV rows")
       ->type_name("N")
       ->capture_default_str();

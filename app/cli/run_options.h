@@ -24,7 +24,7 @@ struct RunOptions {
   /// --backend, a run spec (fooball/run_spec.h): NAME[:KEY=VALUE[,KEY=VALUE]...].
   std::string backendSpec{kDefaultBackend};
   double duration = 10.0;    ///< s of simulated time
-  std::optional<double> dt;  ///< s; the Simulation's default when absent
+  std::optional<double> dt;  ///< s; the scene's own (Scene::dt, else kDefaultDt) when absent
   /// --substeps N: sets the backend's substeps option after the spec's assignments.
   std::optional<std::string> substeps;
   std::vector<std::string> assignments;  ///< --option KEY=VALUE, applied in order after those

@@ -16,13 +16,15 @@ constexpr double kSlingshotGain = 0.2;  // s
 
 }  // namespace
 
-std::optional<std::size_t> nearestBall(Vec2 point, std::span<const Vec2> positions) {
+std::optional<std::size_t> nearestBall(Vec2 point, std::span<const Vec2> positions,
+                                       std::span<const double> radii) {
   std::optional<std::size_t> nearest;
-  double nearestDistanceSquared = std::numeric_limits<double>::infinity();
+  double nearestGap = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    const double distanceSquared = lengthSquared(positions[i] - point);
-    if (distanceSquared < nearestDistanceSquared) {
-      nearestDistanceSquared = distanceSquared;
+    // Negative inside the ball: a ball under the point beats any ball beside it.
+    const double gap = length(positions[i] - point) - radii[i];
+    if (gap < nearestGap) {
+      nearestGap = gap;
       nearest = i;
     }
   }
@@ -34,7 +36,7 @@ std::optional<std::size_t> Interactions::pickTarget(Vec2 point, const BallsView&
     if (selected && *selected < balls.positions.size()) return selected;
     return std::nullopt;
   }
-  return nearestBall(point, balls.positions);
+  return nearestBall(point, balls.positions, balls.radii);
 }
 
 void Interactions::press(Vec2 point, const BallsView& balls) {

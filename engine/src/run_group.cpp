@@ -168,6 +168,7 @@ void RunGroup::restart() {
   const std::size_t count = ballCount();
   Scene scene = loadedScene_;
   scene.world = world();
+  scene.dt = dt();  // a setting, like the world
   forEachSimulation([&](Simulation& simulation) {
     simulation.interactions.selected.reset();
     simulation.load(scene);

@@ -165,7 +165,7 @@ Scene readScene(std::string_view text) {
   checkFormatAndVersion(root, top);
   checkKnownKeys(root, top,
                  {"format", "version", "name", "box", "walls", "gravity", "air_resistance",
-                  "ball_collisions", "balls", "random_balls", "saved_from"});
+                  "ball_collisions", "dt", "balls", "random_balls", "saved_from"});
   Scene scene;
   if (const Json* name = findMember(root, "name")) scene.name = readString(*name, top.key("name"));
   scene.box = readBox(requireMember(root, top, "box"), top.key("box"));
@@ -180,6 +180,7 @@ Scene readScene(std::string_view text) {
   if (const Json* ballCollisions = findMember(root, "ball_collisions")) {
     scene.world.ballCollisions = readBool(*ballCollisions, top.key("ball_collisions"));
   }
+  if (const Json* dt = findMember(root, "dt")) scene.dt = readNumber(*dt, top.key("dt"));
   if (const Json* savedFrom = findMember(root, "saved_from")) {
     scene.savedFrom = readSavedFrom(*savedFrom, top.key("saved_from"));
   }

@@ -148,6 +148,7 @@ void checkScene(const Scene& scene) {
   const Place top;
   checkBox(scene.box, top.key("box"));
   checkWorld(scene.world);
+  if (scene.dt) checkPositive(*scene.dt, top.key("dt"));
   const Place balls = top.key("balls");
   if (scene.balls.size() > kMaxBalls) {
     failAt(balls, "has " + std::to_string(scene.balls.size()) + " balls, more than the limit of " +

@@ -133,6 +133,10 @@ std::string writeScene(const Scene& scene) {
   appendNumber(out, world.airResistance, top.key("air_resistance"));
   out += ",\n  \"ball_collisions\": ";
   appendBool(out, world.ballCollisions);
+  if (scene.dt) {
+    out += ",\n  \"dt\": ";
+    appendNumber(out, *scene.dt, top.key("dt"));
+  }
   if (scene.savedFrom) {
     out += ",\n  \"saved_from\": ";
     appendSavedFrom(out, *scene.savedFrom, top.key("saved_from"));

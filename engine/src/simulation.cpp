@@ -33,6 +33,7 @@ Simulation::Simulation(const Scene& scene, std::unique_ptr<Backend> backend)
 void Simulation::load(const Scene& scene, double startTime) {
   backend_->load(scene);
   adoptScene(scene);
+  dt_ = scene.dt.value_or(kDefaultDt);
   timeBase_ = startTime;
   stepsSinceDtChange_ = 0;
   steps_ = 0;
@@ -80,7 +81,8 @@ void Simulation::setBackend(std::unique_ptr<Backend> next) {
 }
 
 Scene Simulation::scene() const {
-  Scene scene{name_, box_, world_, {}, {}};
+  Scene scene{name_, box_, world_, {}, {}, {}};
+  if (dt_ != kDefaultDt) scene.dt = dt_;
   scene.balls.resize(ballCount());
   for (std::size_t i = 0; i < ballCount(); ++i) {
     scene.balls[i] = {positions_[i], velocities_[i], radii_[i], masses_[i], colors_[i]};

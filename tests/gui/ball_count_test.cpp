@@ -1,3 +1,5 @@
+#include <QLabel>
+#include <QLocale>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <vector>
@@ -42,7 +44,7 @@ TEST_F(BallCount, MoreThanFitAtTheirSizeAreAddedSmaller) {
   EXPECT_LT(group().newBallScale(), 1.0);
   EXPECT_LT(mainRun().radii()[19999], 0.1);
   EXPECT_EQ(mainRun().metrics().maxOverlap, 0.0);
-  EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("size")));
+  EXPECT_TRUE(window->messages().status().contains(QStringLiteral("size")));
 }
 
 TEST_F(BallCount, TooManyToFitShowsAnErrorAndKeepsTheBalls) {
@@ -52,7 +54,22 @@ TEST_F(BallCount, TooManyToFitShowsAnErrorAndKeepsTheBalls) {
   spin(SettingsSidebar::kMaxBallCount);
   EXPECT_EQ(mainRun().ballCount(), 1u);
   EXPECT_EQ(window->sidebar()->ballCountBox()->value(), 1) << "the spinner shows the truth";
-  EXPECT_FALSE(window->statusBar()->currentMessage().isEmpty());
+  // The reason stays beside the field, under it, rather than flashing in the status bar.
+  QLabel* refusal = window->sidebar()->ballCountRefusal();
+  ASSERT_TRUE(refusal->isVisible());
+  EXPECT_TRUE(refusal->text().contains(QStringLiteral("do not fit")))
+      << refusal->text().toStdString();
+  EXPECT_TRUE(refusal->text().contains(QLocale().toString(SettingsSidebar::kMaxBallCount)));
+  QSpinBox* field = window->sidebar()->ballCountBox();
+  const QPoint fieldBottom = field->mapTo(window.get(), QPoint(0, field->height()));
+  const QPoint refusalTop = refusal->mapTo(window.get(), QPoint(0, 0));
+  EXPECT_GE(refusalTop.y(), fieldBottom.y());
+  EXPECT_LT(refusalTop.y() - fieldBottom.y(), 20) << "right under the field";
+  EXPECT_EQ(refusalTop.x(), field->mapTo(window.get(), QPoint(0, 0)).x());
+
+  spin(2);
+  EXPECT_EQ(mainRun().ballCount(), 2u);
+  EXPECT_FALSE(refusal->isVisible()) << "an accepted count clears it";
 }
 
 TEST_F(BallCount, ChangesApplyToBothRunsInCompareMode) {

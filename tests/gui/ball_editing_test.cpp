@@ -87,7 +87,7 @@ TEST_F(BallEditing, ARefusedEditSaysInPlainWordsWhichBallIsInTheWay) {
   const QString expected =
       QStringLiteral("The ball would overlap ball 1 (by 160% of the smaller radius).");
   EXPECT_EQ(error->text(), expected);
-  EXPECT_EQ(window->statusBar()->currentMessage(), expected);
+  EXPECT_EQ(window->messages().status(), expected);
   type("inspectorX", QStringLiteral("0.3"));
   EXPECT_EQ(error->text(),
             QStringLiteral("The ball would stick out of the box through the left wall."));
@@ -164,7 +164,7 @@ TEST_F(BallEditing, AnUndoThatNoLongerFitsSaysWhyAndChangesNothing) {
   runs().setBall(0, intruder);
   press(Qt::Key_Z, Qt::ControlModifier);
   EXPECT_EQ(group().ballCount(), 2u);
-  EXPECT_EQ(window->statusBar()->currentMessage(),
+  EXPECT_EQ(window->messages().status(),
             QStringLiteral("Cannot undo delete of ball 0: The ball would overlap ball 0 (by "
                            "200% of the smaller radius)."));
   EXPECT_TRUE(window->actions().undo()->isEnabled()) << "still there to try again";

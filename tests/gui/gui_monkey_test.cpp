@@ -310,16 +310,12 @@ class GuiMonkey : public GuiTest {
         << (runs().paused() ? "paused" : "running") << (runs().stepping() ? ", a step out" : "")
         << "; errors shown: " << errors.join(QStringLiteral(" | ")).toStdString();
     window->updateStatusBar();
-    const QString ballsText = QObject::tr("%L1 balls").arg(group().ballCount());
-    const QString timeText = QObject::tr("t = %1 s").arg(group().time(), 0, 'f', 2);
-    bool ballsShown = false;
-    bool timeShown = false;
-    for (const QLabel* label : window->statusBar()->findChildren<QLabel*>()) {
-      ballsShown = ballsShown || label->text() == ballsText;
-      timeShown = timeShown || label->text() == timeText;
-    }
-    EXPECT_TRUE(ballsShown) << ballsText.toStdString();
-    EXPECT_TRUE(timeShown) << timeText.toStdString();
+    const QString shown =
+        QObject::tr("%L1 balls, t = %2 s").arg(group().ballCount()).arg(group().time(), 0, 'f', 2);
+    bool ballsAndTimeShown = false;
+    for (const QLabel* label : window->statusBar()->findChildren<QLabel*>())
+      ballsAndTimeShown = ballsAndTimeShown || label->text() == shown;
+    EXPECT_TRUE(ballsAndTimeShown) << shown.toStdString();
     runs().setStepPatience(stepPatience_);
     window->charts()->refresh();
     for (int run = 0; run < runs().runCount(); ++run) {

@@ -5,7 +5,10 @@
 #include <QLabel>
 #include <QSlider>
 #include <QStatusBar>
+#include <cmath>
 
+#include "fooball/limit_check.h"
+#include "fooball/metrics.h"
 #include "fooball/presets.h"
 #include "gui_fixture.h"
 #include "sidebar/settings_sidebar.h"
@@ -41,7 +44,7 @@ TEST_F(LimitNotice, StrongGravityNamesTheRestingPileLimit) {
   frames(60);
   window->updateStatusBar();
   EXPECT_FALSE(notice()->isHidden());
-  EXPECT_TRUE(notice()->text().startsWith(QStringLiteral("⚠ beyond method limits: ")))
+  EXPECT_TRUE(notice()->text().startsWith(QStringLiteral("⚠ method limits — ")))
       << notice()->text().toStdString();
   EXPECT_TRUE(notice()->text().contains(QStringLiteral("resting pile")))
       << notice()->text().toStdString();
@@ -67,9 +70,33 @@ TEST_F(LimitNotice, InCompareModeNamesEachRunBeyondALimit) {
   window->updateStatusBar();
   const QString text = notice()->text();
   EXPECT_FALSE(notice()->isHidden());
-  EXPECT_TRUE(text.contains(QStringLiteral("substeps=1 (")) && text.contains("resting pile"))
-      << text.toStdString();
-  EXPECT_FALSE(text.contains(QStringLiteral("substeps=16 ("))) << text.toStdString();
+  // Each group of limits once, after the numbers of the runs beyond it (run 0: one substep);
+  // the tooltip names every limit of every run.
+  EXPECT_TRUE(text.startsWith(QStringLiteral("⚠ method limits — run 0: "))) << text.toStdString();
+  EXPECT_TRUE(notice()->toolTip().contains(QStringLiteral("elastic:substeps=1: Resting pile")))
+      << notice()->toolTip().toStdString();
+  EXPECT_FALSE(text.contains(QStringLiteral("run 1"))) << text.toStdString();
+}
+
+TEST_F(LimitNotice, AnEnergyErrorOfOnePercentIsPointedOutWithTheSettingThatLowersIt) {
+  // chipmunk at its defaults loses about 3 % of the default preset's energy in 12 s; the elastic
+  // run beside it keeps it to rounding.
+  open(loadPreset(kDefaultPreset), "elastic", {"chipmunk"});
+  const auto* energy = window->statusBar()->findChild<QLabel*>(QStringLiteral("energyNotice"));
+  ASSERT_NE(energy, nullptr);
+  frames(720);
+  window->updateStatusBar();
+  const double error = relativeEnergyError(runs().run(1).metrics());
+  ASSERT_GE(std::abs(error), kNoticeableEnergyError) << "the scene still shows the error";
+  ASSERT_LE(std::abs(error), kEnergyErrorLimit);
+  EXPECT_FALSE(energy->isHidden());
+  EXPECT_TRUE(energy->text().startsWith(QStringLiteral("⚠ energy error: run 1 ")))
+      << energy->text().toStdString();
+  EXPECT_FALSE(energy->text().contains(QStringLiteral("run 0"))) << energy->text().toStdString();
+  const QString tip = energy->toolTip();
+  EXPECT_TRUE(tip.contains(QStringLiteral("chipmunk has lost"))) << tip.toStdString();
+  EXPECT_TRUE(tip.contains(QStringLiteral("raise substeps"))) << tip.toStdString();
+  EXPECT_TRUE(tip.contains(QStringLiteral("raise iterations"))) << tip.toStdString();
 }
 
 }  // namespace

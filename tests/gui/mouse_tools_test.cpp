@@ -1,6 +1,9 @@
+#include <QImage>
 #include <QRadioButton>
 #include <QStatusBar>
 
+#include "chart_reading.h"
+#include "charts/chart_panel.h"
 #include "gui_fixture.h"
 #include "sidebar/settings_sidebar.h"
 
@@ -46,8 +49,8 @@ TEST_F(MouseTools, SelectedScopeWithNothingSelectedSaysSoAndMovesNothing) {
   frames(20);
   QTest::mouseRelease(view(), Qt::LeftButton, {}, pixelOf(cursor));
   EXPECT_EQ(ball(), (Vec2{4.0, 4.5}));
-  EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("none is selected")))
-      << window->statusBar()->currentMessage().toStdString();
+  EXPECT_TRUE(window->messages().status().contains(QStringLiteral("none is selected")))
+      << window->messages().status().toStdString();
 }
 
 TEST_F(MouseTools, RepelPushesBallsAway) {
@@ -107,6 +110,55 @@ TEST_F(MouseTools, ToolsActOnBothRunsInCompareMode) {
   QTest::mouseRelease(view(), Qt::LeftButton, {}, pixelOf({10.0, 4.5}));
   EXPECT_GT(runs().run(0).positions()[0].x, 4.5);
   EXPECT_GT(runs().run(1).positions()[0].x, 4.5);
+}
+
+TEST_F(MouseTools, ClicksInTheCaptionRowsAreNoToolUse) {
+  open(oneBall(), "elastic", {"box2d"});  // two legend entries above the box
+  chooseMode("slingshotRadio");
+  const auto captions = view()->captions();
+  ASSERT_FALSE(captions.empty());
+  const int markers = markerCount(*window->charts());
+  const int boxTop = pixelOf({0.0, fooball::testing::emptyBox().box.height}).y();
+  ASSERT_GT(boxTop, 4);
+  std::vector<QPoint> clicks{QPoint(view()->width() / 2, boxTop - 2)};
+  for (const SimulationView::Caption& caption : captions)
+    clicks.push_back(caption.rect.center());
+  for (const QPoint click : clicks) {
+    QTest::mousePress(view(), Qt::LeftButton, {}, click);
+    EXPECT_FALSE(group().interactions().pressed()) << click.x() << ", " << click.y();
+    QTest::mouseRelease(view(), Qt::LeftButton, {}, click);
+  }
+  frames(5);
+  EXPECT_EQ(markerCount(*window->charts()), markers) << "no slingshot marker";
+  EXPECT_EQ(ball(), (Vec2{4.0, 4.5}));
+  // The box itself still takes the tool.
+  QTest::mousePress(view(), Qt::LeftButton, {}, pixelOf({6.0, 4.5}));
+  EXPECT_TRUE(group().interactions().pressed());
+  QTest::mouseRelease(view(), Qt::LeftButton, {}, pixelOf({6.0, 4.5}));
+}
+
+TEST_F(MouseTools, SlingshotTakesTheBallUnderTheCursorAndRingsIt) {
+  // A big ball, and a small one whose centre is nearer the press than the big one's.
+  Scene scene = fooball::testing::emptyBox();
+  scene.balls = {fooball::testing::ball({5.0, 4.5}, {0.0, 0.0}, 2.0),
+                 fooball::testing::ball({8.3, 4.5}, {0.0, 0.0}, 0.1)};
+  open(scene);
+  chooseMode("slingshotRadio");
+  ASSERT_EQ(group().interactions().scope, Scope::All);
+  const Vec2 press{6.9, 4.5};
+  QTest::mousePress(view(), Qt::LeftButton, {}, pixelOf(press));
+  ASSERT_EQ(mainRun().interactions.target(), std::optional<std::size_t>(0))
+      << "the ball under the cursor, not the nearest centre";
+  const QImage shot = view()->grab().toImage();
+  // Above the big ball, just outside it: the ring (the aim line runs along y = 4.5).
+  const ViewTransform t = view()->transformForRun(0);
+  const QPointF ringTop = t.toPixels(Vec2{5.0, 4.5}) - QPointF(0.0, t.toPixels(2.0) + 4.0);
+  const QColor atRing = shot.pixelColor(ringTop.toPoint() * shot.devicePixelRatio());
+  EXPECT_GT(atRing.lightness(), 60) << "ringed: " << atRing.name().toStdString();
+  QTest::mouseRelease(view(), Qt::LeftButton, {}, pixelOf({6.0, 4.5}));
+  frames(3);
+  EXPECT_GT(mainRun().velocities()[0].x, 0.0) << "pulled left, the big ball flies right";
+  EXPECT_EQ(mainRun().velocities()[1], (Vec2{0.0, 0.0}));
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ TEST_F(RewindInWindow, TheTimelineRewindsWhilePausedAndShowsTheBound) {
   QTest::keyClick(view(), Qt::Key_Space);
   ASSERT_TRUE(timeline->isEnabled());
   EXPECT_EQ(timeline->maximum(), 5);  // moments at 0, 0.1, … 0.5 s
-  EXPECT_EQ(window->timeline().text(), QStringLiteral("history: 0.5 s in 0.0 MB of 256 MB"));
+  EXPECT_EQ(window->timeline().text(), QStringLiteral("history 0.5 s, 0.0/256 MB"));
 
   timeline->setFocus();
   QTest::keyClick(timeline, Qt::Key_Home);  // to the first moment

@@ -100,8 +100,8 @@ TEST_F(SceneFiles, SavedRainStateRecordsItsRunAndOpensAgainExactly) {
   ASSERT_TRUE(window->scenes().openSceneFile(path))
       << errors.join(QStringLiteral("\n")).toStdString();
   EXPECT_TRUE(errors.isEmpty());
-  EXPECT_TRUE(window->statusBar()->currentMessage().contains(QStringLiteral("saved from")))
-      << window->statusBar()->currentMessage().toStdString();
+  EXPECT_TRUE(window->messages().status().contains(QStringLiteral("saved from")))
+      << window->messages().status().toStdString();
   ASSERT_EQ(mainRun().ballCount(), shown.balls.size());
   const Scene reopened = mainRun().scene();
   for (std::size_t i = 0; i < shown.balls.size(); ++i) {
@@ -122,7 +122,7 @@ TEST_F(SceneFiles, SavedStateBeyondTheHandWrittenRulesOpensWithAWarningNotAnErro
                                   balls);
   ASSERT_TRUE(window->scenes().openSceneFile(saved));
   EXPECT_TRUE(errors.isEmpty()) << errors.join(QStringLiteral("\n")).toStdString();
-  const QString status = window->statusBar()->currentMessage();
+  const QString status = window->messages().status();
   EXPECT_TRUE(status.contains(QStringLiteral(
       "saved.json: saved from a running simulation: balls[1] overlaps balls[0] by 12% of the "
       "smaller radius")))

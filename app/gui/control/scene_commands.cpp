@@ -90,10 +90,15 @@ bool SceneCommands::setBallCount(std::size_t count) {
   try {
     parts_.runs.setBallCount(count);
   } catch (const SceneError& error) {
-    parts_.messages.showStatus(QString::fromStdString(error.what()));
-    parts_.sidebar.showBallCount(parts_.runs.group().ballCount());
+    // Beside the field, where the user looks, until a count is accepted.
+    parts_.sidebar.showBallCountRefusal(QObject::tr("%L1 balls refused (%L2 kept): %3")
+                                            .arg(count)
+                                            .arg(before)
+                                            .arg(QString::fromStdString(error.what())));
+    parts_.sidebar.showBallCount(before);
     return false;
   }
+  parts_.sidebar.showBallCountRefusal(QString());
   if (count != before) {
     parts_.undoStack.clear();  // balls renumbered or gone (SceneSession::Parts)
     parts_.feed.markChange(QObject::tr("%1 balls").arg(count));

@@ -74,6 +74,7 @@ void SceneSession::syncSidebar() {
   sidebar.showWorld(group.world());
   sidebar.showStrength(group.interactions().strength);
   sidebar.showTimeScale(parts_.frames.timeScale());
+  sidebar.showDt(group.dt());
   sidebar.showMouseMode(group.interactions().mode);
   sidebar.showScope(group.interactions().scope);
   sidebar.showAttractorCount(group.interactions().attractors().size());

@@ -74,6 +74,11 @@ void SidebarController::connectWorld() {
     parts_.frames.setTimeScale(timeScale);
     parts_.feed.markChange(tr("speed %1×").arg(formatNumber(timeScale)), QStringLiteral("speed"));
   });
+  connect(s, &SettingsSidebar::dtChosen, this, [&runs, &feed](double dt) {
+    runs.change([&](RunGroup& group) { group.setDt(dt); });
+    feed.markChange(tr("dt %1 s").arg(QString::fromStdString(exactNumberText(dt))),
+                    QStringLiteral("dt"));
+  });
   connect(s, &SettingsSidebar::ballCollisionsToggled, this, [&runs, &feed](bool on) {
     runs.changeWorld([&](WorldSettings& world) { world.ballCollisions = on; });
     feed.markChange(on ? tr("collisions on") : tr("collisions off"));

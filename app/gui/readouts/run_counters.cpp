@@ -4,6 +4,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <cmath>
+#include <cstdint>
 
 #include "run_palette.h"
 #include "widgets/number_format.h"
@@ -13,13 +14,34 @@ namespace fooball::gui {
 namespace {
 
 const QString kNoFigure = QStringLiteral("—");
-constexpr int kLabelWidth = 70;  // px: the five columns fit the sidebar's 330 px
+// The widest figure each column keeps room for, so the sidebar (fitted to its controls) keeps
+// its width as the counts grow, up to 100 million collisions (a minute of 100,000 balls), every
+// ball of the largest scene out, an overlap of a whole radius and more.
+constexpr std::uint64_t kWidestCollisions = 99'999'999;
+constexpr std::uint64_t kWidestEscaped = 1'000'000;  // the app's ball limit
+const QString kWidestOverlap = QStringLiteral("<0.01 %");
 
 QLabel* rightAligned(const QString& text, const QString& toolTip) {
   auto* label = new QLabel(text);
   label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
   label->setToolTip(toolTip);
   return label;
+}
+
+/// A figure's cell, as wide as `widest` at any count.
+QLabel* figure(const QString& widest) {
+  QLabel* label = rightAligned(kNoFigure, QString());
+  label->setMinimumWidth(label->fontMetrics().horizontalAdvance(widest));
+  return label;
+}
+
+/// A run spec that may wrap after each ':', ',' and '=' (zero-width spaces): specs have no
+/// spaces, and the sidebar is narrower than the longest.
+QString wrappable(const QString& spec) {
+  QString text = spec.toHtmlEscaped();
+  for (const QChar separator : {QLatin1Char(':'), QLatin1Char(','), QLatin1Char('=')})
+    text.replace(separator, QString(separator) + QChar(0x200B));
+  return text;
 }
 
 /// An overlap as a percentage of the smaller radius: "0", "<0.01 %" (rounding-level contacts),
@@ -39,7 +61,7 @@ RunCounters::RunCounters(QWidget* parent)
     : QGroupBox(tr("Counters"), parent), grid_(new QGridLayout(this)) {
   setObjectName(QStringLiteral("runCounters"));
   setToolTip(tr("Since the scene was loaded or restarted, per run: what fooball-cli run reports"));
-  grid_->setHorizontalSpacing(6);
+  grid_->setHorizontalSpacing(3);
   grid_->setVerticalSpacing(2);
   const QStringList headers{tr("ball–ball"), tr("wall"), tr("overlap"), tr("out")};
   const QStringList toolTips{
@@ -50,7 +72,7 @@ RunCounters::RunCounters(QWidget* parent)
   for (int column = 0; column < headers.size(); ++column)
     grid_->addWidget(
         rightAligned(QStringLiteral("<b>%1</b>").arg(headers[column]), toolTips[column]), 0,
-        column + 1);
+        column);
 }
 
 void RunCounters::showRuns(const QStringList& labels) {
@@ -63,20 +85,22 @@ void RunCounters::showRuns(const QStringList& labels) {
   }
   rows_.clear();
   for (int run = 0; run < labels.size(); ++run) {
-    // Long run specs are cut short here; the tooltip has them whole.
-    const QString shortLabel = fontMetrics().elidedText(labels[run], Qt::ElideMiddle, kLabelWidth);
+    // Each run's spec whole on a line of its own (wrapped if long), its figures under it.
     Row row{labels[run],
             new QLabel(QStringLiteral("<span style='color:%1'>●</span> %2")
-                           .arg(colours::runColour(run).name(), shortLabel.toHtmlEscaped())),
-            rightAligned(kNoFigure, QString()),
-            rightAligned(kNoFigure, QString()),
-            rightAligned(kNoFigure, QString()),
-            rightAligned(kNoFigure, QString())};
+                           .arg(colours::runColour(run).name(), wrappable(labels[run]))),
+            figure(formatCount(kWidestCollisions)),
+            figure(formatCount(kWidestCollisions)),
+            figure(kWidestOverlap),
+            figure(formatCount(kWidestEscaped))};
+    row.name->setObjectName(QStringLiteral("runCounterName"));
+    row.name->setWordWrap(true);
     row.name->setToolTip(tr("Run %1: %2").arg(run).arg(labels[run]));
+    const int line = 2 * run + 1;
+    grid_->addWidget(row.name, line, 0, 1, 4);
     int column = 0;
-    for (QLabel* cell :
-         {row.name, row.ballCollisions, row.wallCollisions, row.overlap, row.escaped})
-      grid_->addWidget(cell, run + 1, column++);
+    for (QLabel* cell : {row.ballCollisions, row.wallCollisions, row.overlap, row.escaped})
+      grid_->addWidget(cell, line + 1, column++);
     rows_.push_back(row);
   }
 }

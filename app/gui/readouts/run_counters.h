@@ -11,10 +11,12 @@ class QLabel;
 
 namespace fooball::gui {
 
-/// The sidebar's "Counters" table: per run (in its colour) the ball–ball collisions and wall
+/// The sidebar's "Counters" table: per run (its spec in its colour on a line of its own, never
+/// cut short) the ball–ball collisions and wall
 /// bounces since the scene was loaded, the deepest overlap now (ball–ball or ball–wall, as a
 /// fraction of the smaller radius) and the balls whose centre is outside the box — what
-/// `fooball-cli run` reports, for every run of the group.
+/// `fooball-cli run` reports, for every run of the group. Its width does not grow with the
+/// counts up to 100 million collisions.
 class RunCounters : public QGroupBox {
   Q_OBJECT
 

@@ -11,10 +11,12 @@ namespace fooball::gui {
 class FrameRate;
 class RunController;
 
-/// The status bar's permanent fields: cursor position, runs, balls, simulated time, steps and
-/// frames per second and the cost of a step per run, refreshed four times a second. It also
+/// The status bar's permanent fields: cursor position, balls and simulated time, steps and
+/// frames per second and the cost of a step (the slowest run's), refreshed four times a second,
+/// each short enough that eight runs at 1000 px leave the timeline its room; tooltips wrap. It also
 /// says how to give up a step that has run in the background for more than a second, warns
-/// while any run has had steps cut short (cutShortNotice), and names the limits of its method
+/// while any run has had steps cut short (cutShortNotice), points out an energy error a user
+/// would care about (kNoticeableEnergyError), and names the limits of its method
 /// each run is beyond (crossedLimits), with what to do in the tooltip; checked at each refresh,
 /// not per step.
 class StatusPanel : public QObject {
@@ -32,19 +34,22 @@ class StatusPanel : public QObject {
   QLabel* addField(const QString& toolTip);
   void showCutShortSteps();
   void showCrossedLimits();
+  /// Runs whose relative energy error passed kNoticeableEnergyError (fooball/limit_check.h),
+  /// each with the option that lowers it where its backend has one.
+  void showEnergyErrors();
+  /// How a notice names run `index`: its spec, or in compare mode "run 2".
+  QString runName(int index) const;
 
   QStatusBar& bar_;
   const RunController& runs_;
   const FrameRate& frameRate_;
   QTimer* timer_;
   QLabel* cursor_;
-  QLabel* runsField_;
-  QLabel* balls_;
-  QLabel* time_;
-  QLabel* steps_;
-  QLabel* frames_;
+  QLabel* ballsAndTime_;
+  QLabel* rates_;
   QLabel* stepCost_;
   QLabel* cutShort_;
+  QLabel* energy_;
   QLabel* limits_;
 };
 

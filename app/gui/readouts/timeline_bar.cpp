@@ -51,7 +51,8 @@ void TimelineBar::showHistory() {
   showing_ = false;
   slider_->setEnabled(runs_.paused() && history->size() > 1);
   const double span = history->time(history->size() - 1) - history->time(0);
-  text_->setText(tr("history: %1 s in %2 MB of %3 MB")
+  // Short, so that the timeline keeps room beside eight runs' status fields at 1000 px.
+  text_->setText(tr("history %1 s, %2/%3 MB")
                      .arg(span, 0, 'f', 1)
                      .arg(double(history->bytes()) / kBytesPerMegabyte, 0, 'f', 1)
                      .arg(double(history->bound()) / kBytesPerMegabyte, 0, 'f', 0));

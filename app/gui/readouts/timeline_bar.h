@@ -10,9 +10,9 @@ namespace fooball::gui {
 class RunController;
 
 /// The rewind timeline in the status bar: a slider over the moments the runs can go back to
-/// (fooball/run_history.h), usable while paused, and what the history holds, e.g. "history:
-/// 12.4 s in 0.6 MB of 256 MB". Dragging it rewinds every run together (RunController::
-/// rewindTo); continuing from there drops the future.
+/// (fooball/run_history.h), usable while paused, and what the history holds, e.g. "history
+/// 12.4 s, 0.6/256 MB" (its tooltip says what the numbers are). Dragging it rewinds every run
+/// together (RunController:: rewindTo); continuing from there drops the future.
 class TimelineBar : public QWidget {
   Q_OBJECT
 

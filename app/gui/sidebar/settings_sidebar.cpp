@@ -8,12 +8,16 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <cmath>
 
+#include "fooball/number_text.h"
 #include "fooball/presets.h"
 #include "readouts/run_counters.h"
 #include "sidebar/ball_inspector.h"
@@ -96,6 +100,12 @@ QGroupBox* SettingsSidebar::createSceneGroup() {
               tr("More balls are placed where there is room, sized like the balls already "
                  "there; fewer removes the newest"));
   connect(ballCount_, &QSpinBox::valueChanged, this, &SettingsSidebar::ballCountChosen);
+  ballCountRefusal_ = new QLabel;
+  ballCountRefusal_->setObjectName(QStringLiteral("ballCountRefusal"));
+  ballCountRefusal_->setWordWrap(true);
+  ballCountRefusal_->setStyleSheet(QStringLiteral("color: #ffb347"));
+  ballCountRefusal_->hide();
+  layout->addWidget(ballCountRefusal_);
 
   auto* restart = new QPushButton(tr("Restart"));
   restart->setToolTip(
@@ -149,6 +159,20 @@ QGroupBox* SettingsSidebar::createForcesGroup() {
               tr("Simulated seconds per real second; right is faster. The time step stays "
                  "the same, so results do not depend on it"));
   connect(timeScale_, &LogSlider::valueChanged, this, &SettingsSidebar::timeScaleChosen);
+
+  dt_ = new QLineEdit;
+  dt_->setObjectName(QStringLiteral("dtField"));
+  addLabelled(layout, tr("&Time step (dt, s):"), dt_,
+              tr("The physics time step in seconds, as fooball-cli's --dt: any positive number "
+                 "(the default is 1/60). Smaller is more accurate and takes more steps per "
+                 "simulated second. Saved with the scene and reopened with it"));
+  connect(dt_, &QLineEdit::editingFinished, this, &SettingsSidebar::readDt);
+  dtRefusal_ = new QLabel;
+  dtRefusal_->setObjectName(QStringLiteral("dtRefusal"));
+  dtRefusal_->setWordWrap(true);
+  dtRefusal_->setStyleSheet(ballCountRefusal_->styleSheet());
+  dtRefusal_->hide();
+  layout->addWidget(dtRefusal_);
 
   auto* reset = new QPushButton(tr("Reset sliders"));
   reset->setToolTip(
@@ -285,6 +309,11 @@ void SettingsSidebar::showBallCount(std::size_t count) {
   ballCount_->setValue(static_cast<int>(std::min<std::size_t>(count, kMaxBallCount)));
 }
 
+void SettingsSidebar::showBallCountRefusal(const QString& reason) {
+  ballCountRefusal_->setText(reason);
+  ballCountRefusal_->setVisible(!reason.isEmpty());
+}
+
 void SettingsSidebar::showWorld(const WorldSettings& world) {
   gravity_->setValue(length(world.gravity));
   airResistance_->setValue(world.airResistance);
@@ -304,6 +333,27 @@ void SettingsSidebar::showStrength(double strength) {
 
 void SettingsSidebar::showTimeScale(double timeScale) {
   timeScale_->setValue(timeScale);
+}
+
+void SettingsSidebar::showDt(double dt) {
+  shownDt_ = dt;
+  dt_->setText(QString::fromStdString(exactNumberText(dt)));
+}
+
+void SettingsSidebar::readDt() {
+  const QString text = dt_->text().trimmed();
+  if (text == QString::fromStdString(exactNumberText(shownDt_))) return;  // left as it was
+  bool ok = false;
+  const double dt = QLocale::c().toDouble(text, &ok);
+  if (!ok || !std::isfinite(dt) || !(dt > 0.0)) {
+    dtRefusal_->setText(
+        tr("“%1” is no time step: a positive number of seconds, e.g. 0.001").arg(text));
+    dtRefusal_->show();
+    showDt(shownDt_);
+    return;
+  }
+  dtRefusal_->hide();
+  emit dtChosen(dt);
 }
 
 void SettingsSidebar::showMouseMode(MouseMode mode) {

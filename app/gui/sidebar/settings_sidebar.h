@@ -13,6 +13,7 @@ class QCheckBox;
 class QComboBox;
 class QGroupBox;
 class QLabel;
+class QLineEdit;
 class QPushButton;
 class QSpinBox;
 
@@ -44,14 +45,19 @@ class SettingsSidebar : public QWidget {
   LogSlider* strengthSlider() const { return strength_; }
   LogSlider* timeScaleSlider() const { return timeScale_; }
   QSpinBox* ballCountBox() const { return ballCount_; }
+  QLabel* ballCountRefusal() const { return ballCountRefusal_; }
+  QLineEdit* dtField() const { return dt_; }
 
  public slots:
   /// `presetName` empty: the scene came from a file called `sourceName`.
   void showSceneSource(const QString& presetName, const QString& sourceName);
   void showBallCount(std::size_t count);
+  /// Why the last ball count asked for was refused, under the field; empty hides it.
+  void showBallCountRefusal(const QString& reason);
   void showWorld(const WorldSettings& world);
   void showStrength(double strength);
   void showTimeScale(double timeScale);
+  void showDt(double dt);
   void showMouseMode(MouseMode mode);
   void showScope(Scope scope);
   void showAttractorCount(std::size_t count);
@@ -69,6 +75,7 @@ class SettingsSidebar : public QWidget {
   void airResistanceChosen(double coefficient);  ///< 1/s
   void strengthChosen(double strength);          ///< 1/s²
   void timeScaleChosen(double timeScale);        ///< simulated seconds per real second
+  void dtChosen(double dt);                      ///< s, > 0 and finite
   void resetSlidersRequested();
   void ballCollisionsToggled(bool on);
   /// One wall's box was toggled: `walls` is every wall as the boxes show them now.
@@ -89,15 +96,21 @@ class SettingsSidebar : public QWidget {
   QGroupBox* createCollisionsGroup();
   QGroupBox* createMouseGroup();
   QGroupBox* createDrawingGroup();
+  /// The time step field was left: emits dtChosen, or says beside it why not.
+  void readDt();
 
   QComboBox* preset_;
   QSpinBox* ballCount_;
+  QLabel* ballCountRefusal_;
   RunListEditor* runList_;
   RunCounters* counters_;
   LogSlider* gravity_;
   LogSlider* airResistance_;
   LogSlider* strength_;
   LogSlider* timeScale_;
+  QLineEdit* dt_;
+  QLabel* dtRefusal_;
+  double shownDt_ = kDefaultDt;
   QCheckBox* ballCollisions_;
   /// One box per wall, so a box of three walls (mass-ratio) reads as it is.
   QCheckBox* leftWall_;

@@ -65,6 +65,7 @@ void SimulationView::mousePressEvent(QMouseEvent* event) {
     emit lookForClosed();
     return;
   }
+  if (inCaptionRows(event->position())) return;  // reading the legend, not using a tool
   const Vec2 point = toMetres(event->position());
   if (event->button() == Qt::RightButton) {
     emit attractorPlaced(point);

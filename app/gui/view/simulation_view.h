@@ -131,6 +131,8 @@ class SimulationView : public QWidget {
   const Panel* panelAt(QPointF position, const std::vector<Panel>& panels) const;
   Vec2 toMetres(QPointF position) const;
   std::optional<std::size_t> ballAt(QPointF position) const;
+  /// On a caption, or in the rows above every box: a click there is no use of the mouse tool.
+  bool inCaptionRows(QPointF position) const;
   double temperatureTopSpeed();
   /// Fills drawn_ for this paint: every position below is drawn from it.
   void driftRuns();

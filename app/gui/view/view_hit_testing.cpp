@@ -28,6 +28,18 @@ const SimulationView::Panel* SimulationView::panelAt(QPointF position,
   });
 }
 
+bool SimulationView::inCaptionRows(QPointF position) const {
+  const Layout laidOut = layout();
+  if (std::ranges::any_of(laidOut.captions, [&](const Caption& caption) {
+        return QRectF(caption.rect).contains(position);
+      })) {
+    return true;
+  }
+  const auto boxTop = [](const Panel& panel) { return panel.transform.boxRect().top(); };
+  return std::ranges::all_of(laidOut.panels,
+                             [&](const Panel& panel) { return position.y() < boxTop(panel); });
+}
+
 ViewTransform SimulationView::transformForRun(int runIndex) const {
   const auto all = panels();
   for (const Panel& panel : all) {

@@ -22,6 +22,7 @@ namespace {
 constexpr QRgb kSurround = 0xff16171c;         // outside the box
 constexpr QRgb kWallColour = 0xff6b7385;       // walls that are on; dashed when off
 constexpr QRgb kVectorColour = 0xff9be564;     // velocity vectors
+constexpr double kTargetRingGap = 4.0;         // px between a tool's target ball and its ring
 constexpr QRgb kAttractorColour = 0xffffd166;  // permanent attractors and the slingshot band
 constexpr double kVectorSeconds = 0.25;        // a velocity vector shows 0.25 s of travel
 /// Arrowheads: a third of the vector, between these lengths (px), so they read on long vectors
@@ -257,6 +258,12 @@ void SimulationView::paintTethers(QPainter& painter, const Panel& panel) {
       painter.setRenderHint(QPainter::Antialiasing, true);
       painter.setPen(QPen(colour, 1.5));
       painter.drawLine(cursor, t.toPixels(positions[*target]));
+      // The ball the tool took at the press (Interactions::press), ringed so it is obvious.
+      const double ring = t.toPixels(runs_.run(panel.runIndex).radii()[*target]) + kTargetRingGap;
+      painter.setPen(QPen(colour, 2.0));
+      painter.setBrush(Qt::NoBrush);
+      painter.drawEllipse(t.toPixels(positions[*target]), ring, ring);
+      painter.setPen(QPen(colour, 1.5));
       if (tools.mode == MouseMode::Slingshot) {
         // Where the ball will fly: opposite to the pull.
         const QPointF ball = t.toPixels(positions[*target]);

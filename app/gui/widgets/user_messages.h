@@ -11,6 +11,8 @@ namespace fooball::gui {
 
 /// How the app tells the user what happened: a line in the status bar (showStatus), or, for
 /// what they must not miss, an error (a message box by default; tests record them instead).
+/// A line longer than the room left of the status bar's fields is cut short with "…" rather
+/// than painted over them, and the bar's tooltip has it whole while it shows.
 class UserMessages : public QObject {
   Q_OBJECT
 
@@ -21,6 +23,8 @@ class UserMessages : public QObject {
   UserMessages(QStatusBar& bar, QWidget& window);
 
   void setErrorReporter(ErrorReporter reporter) { reportError_ = std::move(reporter); }
+  /// The line the status bar shows now, whole; empty once it has gone.
+  QString status() const { return status_; }
 
  public slots:
   void showStatus(const QString& message);
@@ -29,6 +33,7 @@ class UserMessages : public QObject {
  private:
   QStatusBar& bar_;
   ErrorReporter reportError_;
+  QString status_;
 };
 
 }  // namespace fooball::gui

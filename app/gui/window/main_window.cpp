@@ -29,6 +29,7 @@
 #include "widgets/fitted_scroll_area.h"
 #include "widgets/number_field_keys.h"
 #include "widgets/user_messages.h"
+#include "widgets/wheel_needs_focus.h"
 #include "window/dock_layout.h"
 #include "window/window_actions.h"
 
@@ -111,6 +112,7 @@ void MainWindow::createDocks() {
   sidebar_ = new SettingsSidebar;
   // As narrow as the sidebar's controls allow, so the box keeps the room at 1000 px wide.
   sidebarScroll_ = new FittedScrollArea(sidebar_);
+  new WheelNeedsFocus(*sidebarScroll_);
   sidebarDock_ = new QDockWidget(tr("Settings"), this);
   sidebarDock_->setObjectName(QStringLiteral("settingsDock"));
   sidebarDock_->setWidget(sidebarScroll_);

@@ -214,7 +214,7 @@ void WindowActions::createMenus() {
 
   QMenu* help = bar->addMenu(tr("&Help"));
   help->addAction(tr("&Mouse and keys"), QKeySequence::HelpContents, this,
-                  [this] { showMouseAndKeys(&parts_.window); });
+                  [this, bar] { showMouseAndKeys(&parts_.window, *bar); });
   help->addAction(tr("&Reading the charts"), this,
                   [this] { showReadingTheCharts(&parts_.window); });
   help->addAction(tr("&About FooBall"), this, [this] { showAbout(&parts_.window); });

@@ -38,8 +38,8 @@ class Interactions {
   double strength = kDefaultStrength;
   std::optional<std::size_t> selected;  ///< the ball Scope::Selected acts on
 
-  /// A press at `point` (m). Grab and slingshot take the target ball (nearest, or the
-  /// selected one) here.
+  /// A press at `point` (m). Grab and slingshot take the target ball (nearestBall: the one
+  /// under the point or else the nearest, or the selected one) here.
   void press(Vec2 point, const BallsView& balls);
   void move(Vec2 point) { cursor_ = point; }
   /// Ends the press; the slingshot fires on the next forces() call.
@@ -75,7 +75,11 @@ class Interactions {
   std::vector<Vec2> attractors_;
 };
 
-/// Index of the ball whose centre is nearest to `point`, if there are balls.
-std::optional<std::size_t> nearestBall(Vec2 point, std::span<const Vec2> positions);
+/// The ball a press at `point` takes, if there are balls: the one under it, or else the one whose
+/// edge is nearest (not its centre: beside a big ball, a small ball's centre may be nearer
+/// than the big ball's edge the user pressed). Among overlapping balls under it, the one it is
+/// deepest in.
+std::optional<std::size_t> nearestBall(Vec2 point, std::span<const Vec2> positions,
+                                       std::span<const double> radii);
 
 }  // namespace fooball

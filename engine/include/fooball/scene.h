@@ -69,6 +69,10 @@ struct SavedFrom {
   friend bool operator==(const SavedFrom&, const SavedFrom&) = default;
 };
 
+/// s: the time step a scene runs at unless it names its own (Scene::dt) or a run is told
+/// another (fooball-cli --dt, the app's time step field).
+inline constexpr double kDefaultDt = 1.0 / 60.0;
+
 struct Scene {
   std::string name;
   Box box;
@@ -76,6 +80,9 @@ struct Scene {
   std::vector<BallDef> balls;
   /// Set in files FooBall wrote from a running simulation; absent in hand-written ones.
   std::optional<SavedFrom> savedFrom;
+  /// s, > 0: the time step to run the scene at ("dt"); kDefaultDt when absent. Written only when
+  /// it differs from kDefaultDt, so a scene at the default step reads as it always did.
+  std::optional<double> dt;
 };
 
 /// Limits stated by the scene format; inputs beyond them are errors, not clamps.

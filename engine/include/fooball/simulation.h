@@ -177,7 +177,7 @@ class Simulation {
   std::vector<std::uint32_t> colors_;
   std::vector<Vec2> forces_;
   std::string name_;
-  double dt_ = 1.0 / 60.0;
+  double dt_ = kDefaultDt;
   /// Simulated time is timeBase_ + stepsSinceDtChange_·dt_: exact multiples of dt, no drift from
   /// summing dt step by step.
   double timeBase_ = 0.0;
