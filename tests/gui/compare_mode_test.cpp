@@ -282,6 +282,23 @@ TEST_F(CompareMode, TheChartsPlotEveryRunsMetricsAndTheirTicksReadThem) {
   }
 }
 
+TEST_F(CompareMode, TheCountersSayHowManyBallsABackendHoldsAtRest) {
+  // One ball rolling on the floor under gravity: exact lays it to rest on the floor (its
+  // normal motion held by the wall), elastic holds nothing at rest.
+  Scene scene = fooball::testing::emptyBox();
+  scene.world.gravity = {0.0, -9.81};
+  scene.balls = {fooball::testing::ball({2.0, 0.5}, {1.5, 0.0})};
+  open(scene, "exact", {"elastic"});
+  frames(30);
+  window->feed().showReadouts();
+  ASSERT_EQ(runs().run(0).metrics().restingBalls, 1u);
+  ASSERT_EQ(runs().run(1).metrics().restingBalls, 0u);
+  const QStringList lines = window->sidebar()->counters()->text().split(QLatin1Char('\n'));
+  ASSERT_EQ(lines.size(), 2);
+  EXPECT_TRUE(lines[0].endsWith(QStringLiteral(", 1 resting"))) << lines[0].toStdString();
+  EXPECT_FALSE(lines[1].contains(QStringLiteral("resting"))) << lines[1].toStdString();
+}
+
 TEST_F(CompareMode, TheCountersShowEachRunsOwnCollisionsBouncesOverlapAndEscapes) {
   open(fooball::testing::gas(80), "elastic", {"exact", "box2d"});
   frames(90);

@@ -86,9 +86,12 @@ void RunCounters::showRuns(const QStringList& labels) {
   rows_.clear();
   for (int run = 0; run < labels.size(); ++run) {
     // Each run's spec whole on a line of its own (wrapped if long), its figures under it.
+    const QString nameHtml = QStringLiteral("<span style='color:%1'>●</span> %2")
+                                 .arg(colours::runColour(run).name(), wrappable(labels[run]));
     Row row{labels[run],
-            new QLabel(QStringLiteral("<span style='color:%1'>●</span> %2")
-                           .arg(colours::runColour(run).name(), wrappable(labels[run]))),
+            nameHtml,
+            0,
+            new QLabel(nameHtml),
             figure(formatCount(kWidestCollisions)),
             figure(formatCount(kWidestCollisions)),
             figure(kWidestOverlap),
@@ -118,15 +121,23 @@ void RunCounters::showMetrics(const std::vector<Metrics>& metrics) {
     row.wallCollisions->setText(formatCount(m.wallCollisions));
     row.overlap->setText(overlapText(m.maxOverlap));
     row.escaped->setText(formatCount(m.escaped));
+    if (m.restingBalls != row.resting) {
+      row.resting = m.restingBalls;
+      row.name->setText(row.resting == 0
+                            ? row.nameHtml
+                            : tr("%1 · %2 resting").arg(row.nameHtml, formatCount(row.resting)));
+    }
   }
 }
 
 QString RunCounters::text() const {
   QStringList lines;
   for (const Row& row : rows_) {
-    lines.append(tr("%1: %2 ball–ball, %3 wall, overlap %4, %5 escaped")
-                     .arg(row.label, row.ballCollisions->text(), row.wallCollisions->text(),
-                          row.overlap->text(), row.escaped->text()));
+    QString line = tr("%1: %2 ball–ball, %3 wall, overlap %4, %5 escaped")
+                       .arg(row.label, row.ballCollisions->text(), row.wallCollisions->text(),
+                            row.overlap->text(), row.escaped->text());
+    if (row.resting != 0) line += tr(", %1 resting").arg(formatCount(row.resting));
+    lines.append(line);
   }
   return lines.join(QLatin1Char('\n'));
 }
