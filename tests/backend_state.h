@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -15,6 +16,13 @@ struct State {
 
 inline std::vector<Vec2> copyOf(std::span<const Vec2> values) {
   return {values.begin(), values.end()};
+}
+
+/// Steps `backend` for `seconds` (rounded to whole steps of `dt`, s) without forces.
+inline void runFor(Backend& backend, double seconds, double dt = kDefaultDt) {
+  const auto steps = static_cast<int>(std::lround(seconds / dt));
+  for (int i = 0; i < steps; ++i)
+    backend.step(dt, {});
 }
 
 inline State readState(const Backend& backend) {

@@ -53,11 +53,7 @@ double momentumScale(const Scene& scene) {
   return scale;
 }
 
-void run(Backend& backend, double seconds, double dt = 1.0 / 60.0) {
-  const auto steps = static_cast<int>(std::lround(seconds / dt));
-  for (int i = 0; i < steps; ++i)
-    backend.step(dt, {});
-}
+using testing::runFor;
 
 TEST_P(Conformance, MomentumIsConservedWithWallsOff) {
   Scene scene = gas(300);
@@ -67,7 +63,7 @@ TEST_P(Conformance, MomentumIsConservedWithWallsOff) {
   const Vec2 before =
       sumState(readState(*backend).positions, readState(*backend).velocities, massesOf(scene), {})
           .momentum;
-  run(*backend, 3.0);
+  runFor(*backend, 3.0);
   const State after = readState(*backend);
   const Vec2 momentum = sumState(after.positions, after.velocities, massesOf(scene), {}).momentum;
   EXPECT_GT(backend->counters().ballCollisions, 50u) << "the test needs collisions to mean much";
@@ -81,7 +77,7 @@ TEST_P(Conformance, KineticEnergyIsConservedInAGasWithoutGravity) {
   const double before =
       sumState(readState(*backend).positions, readState(*backend).velocities, massesOf(scene), {})
           .kineticEnergy;
-  run(*backend, 5.0);
+  runFor(*backend, 5.0);
   const State after = readState(*backend);
   const double energy =
       sumState(after.positions, after.velocities, massesOf(scene), {}).kineticEnergy;
@@ -103,7 +99,7 @@ TEST_P(Conformance, EnergyUnderGravityChangesAsTheProfileSays) {
   const double before =
       sumState(start.positions, start.velocities, massesOf(scene), scene.world.gravity)
           .totalEnergy();
-  run(*backend, 5.0);
+  runFor(*backend, 5.0);
   const State after = readState(*backend);
   const double energy =
       sumState(after.positions, after.velocities, massesOf(scene), scene.world.gravity)
@@ -143,8 +139,8 @@ TEST_P(Conformance, SameSceneGivesTheSameTrajectory) {
   auto second = make();
   first->load(scene);
   second->load(scene);
-  run(*first, 2.0);
-  run(*second, 2.0);
+  runFor(*first, 2.0);
+  runFor(*second, 2.0);
   const State a = readState(*first);
   const State b = readState(*second);
   for (std::size_t i = 0; i < a.positions.size(); ++i) {
@@ -160,7 +156,7 @@ TEST_P(Conformance, LoadingTheStateItReportsGivesBackTheSameState) {
   scene.world.gravity = {0.0, -4.0};
   auto original = make();
   original->load(scene);
-  run(*original, 1.0);
+  runFor(*original, 1.0);
   const State state = readState(*original);
   ASSERT_EQ(state.positions.size(), scene.balls.size());
   Scene reported = scene;
@@ -210,7 +206,7 @@ TEST_P(Conformance, HeadOnEqualMassesSwapVelocities) {
   scene.balls = {ball({5.0, 4.5}, {2.0, 0.0}), ball({11.0, 4.5}, {-1.0, 0.0})};
   auto backend = make();
   backend->load(scene);
-  run(*backend, 2.0);  // a 5 m gap closing at 3 m/s: contact at t = 5/3 s, no wall before 2 s
+  runFor(*backend, 2.0);  // a 5 m gap closing at 3 m/s: contact at t = 5/3 s, no wall before 2 s
   const State state = readState(*backend);
   EXPECT_NEAR(state.velocities[0].x, -1.0, 1.0 * tolerances().velocity);
   EXPECT_NEAR(state.velocities[1].x, 2.0, 2.0 * tolerances().velocity);
@@ -241,7 +237,7 @@ TEST_P(Conformance, AWallBounceIsCountedOnceWithItsImpulse) {
   scene.balls = {ball({14.0, 4.5}, {3.0, 0.0}, 0.5, 2.0)};
   auto backend = make();
   backend->load(scene);
-  run(*backend, 1.0);  // reaches the right wall (x = 15.5) after 0.5 s
+  runFor(*backend, 1.0);  // reaches the right wall (x = 15.5) after 0.5 s
   const State state = readState(*backend);
   EXPECT_EQ(backend->counters().wallCollisions, 1u);
   EXPECT_NEAR(backend->counters().wallImpulse, 2.0 * 2.0 * 3.0, 12.0 * tolerances().velocity);
@@ -254,7 +250,7 @@ TEST_P(Conformance, WallsThatAreOffLetBallsOut) {
   scene.balls = {ball({14.0, 4.5}, {3.0, 0.0})};
   auto backend = make();
   backend->load(scene);
-  run(*backend, 2.0);
+  runFor(*backend, 2.0);
   EXPECT_NEAR(readState(*backend).positions[0].x, 20.0, tolerances().position);
   EXPECT_EQ(backend->counters().wallCollisions, 0u);
 }
@@ -265,7 +261,7 @@ TEST_P(Conformance, BallsPassThroughEachOtherWhenCollisionsAreOff) {
   scene.balls = {ball({5.0, 4.5}, {2.0, 0.0}), ball({11.0, 4.5}, {-2.0, 0.0})};
   auto backend = make();
   backend->load(scene);
-  run(*backend, 2.0);
+  runFor(*backend, 2.0);
   const State state = readState(*backend);
   EXPECT_NEAR(state.positions[0].x, 9.0, tolerances().position);
   EXPECT_NEAR(state.positions[1].x, 7.0, tolerances().position);
@@ -277,11 +273,11 @@ TEST_P(Conformance, SetWorldChangesGravityLive) {
   scene.balls = {ball({8.0, 4.5}, {0.0, 0.0})};
   auto backend = make();
   backend->load(scene);
-  run(*backend, 0.5);
+  runFor(*backend, 0.5);
   EXPECT_EQ(readState(*backend).velocities[0].y, 0.0);
   scene.world.gravity = {0.0, -2.0};
   backend->setWorld(scene.world);
-  run(*backend, 0.5);
+  runFor(*backend, 0.5);
   EXPECT_NEAR(readState(*backend).velocities[0].y, -1.0, tolerances().velocity);
 }
 
@@ -289,7 +285,7 @@ TEST_P(Conformance, SetBallEditsOneBallAndKeepsTheOthers) {
   Scene scene = gas(50, 2);
   auto backend = make();
   backend->load(scene);
-  run(*backend, 0.25);
+  runFor(*backend, 0.25);
   const State before = readState(*backend);
   // Ball 7, smaller (0.05 m: it overlaps nothing new), at rest and heavier, where it is.
   BallDef edited = ball({8.0, 4.5}, {0.0, 0.0}, 0.05, 3.0);
@@ -321,7 +317,7 @@ TEST_P(Conformance, StepsDoNotAllocateInSteadyState) {
   auto backend = make();
   backend->load(scene);
   std::vector<Vec2> forces(scene.balls.size(), Vec2{0.1, 0.0});
-  run(*backend, 2.0);  // warm up: buffers grow to their working size
+  runFor(*backend, 2.0);  // warm up: buffers grow to their working size
   backend->step(1.0 / 60.0, forces);
   const long before = testing::allocationCount();
   for (int i = 0; i < 60; ++i) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "backend_profiles.h"
+#include "backend_state.h"
 #include "fooball/backend.h"
 #include "registry.h"
 #include "test_scenes.h"
@@ -31,13 +32,8 @@ class WallCount : public ::testing::TestWithParam<BackendInfo> {
   }
 };
 
-constexpr double kDt = 1.0 / 60.0;  // s, the app's frame
-
-void run(Backend& backend, double seconds) {
-  const auto steps = static_cast<int>(std::lround(seconds / kDt));
-  for (int i = 0; i < steps; ++i)
-    backend.step(kDt, {});
-}
+using testing::kDt;
+using testing::runFor;
 
 /// A pile at rest under 9.81 m/s² in a 16 × 9 m box: balls of radius 0.1 m, touching, in four
 /// rows stacked as tightly as disks go (each ball in the groove of two below): 80, 79, 78 and 77
@@ -58,10 +54,10 @@ Scene restingPile() {
 TEST_P(WallCount, APileAtRestBeginsNoWallCollisions) {
   auto backend = make();
   backend->load(restingPile());
-  run(*backend, 1.0);  // its contacts begin, and whatever settling the method does is done
+  runFor(*backend, 1.0);  // its contacts begin, and whatever settling the method does is done
   const std::uint64_t settled = backend->counters().wallCollisions;
   const double seconds = 2.0;
-  run(*backend, seconds);
+  runFor(*backend, seconds);
   const double perSecond =
       static_cast<double>(backend->counters().wallCollisions - settled) / seconds;
   // A count per substep of every ball on the floor would be 80 × 60 × the substeps a second.
@@ -105,7 +101,7 @@ TEST_P(WallCount, AGasCountsTheBouncesItsWallImpulseAddsUpTo) {
   }
   auto backend = make();
   backend->load(scene);
-  run(*backend, seconds);
+  runFor(*backend, seconds);
   const BackendCounters counters = backend->counters();
   const auto counted = static_cast<double>(counters.wallCollisions);
   // Each bounce gives 2 m v_n = 2 N·s.
@@ -124,7 +120,7 @@ TEST_P(WallCount, OneBallBouncingCountsOnePerBounce) {
   scene.balls.push_back(ball({8.0, 4.5}, {0.0, 0.0}, 0.5));
   auto backend = make();
   backend->load(scene);
-  run(*backend, 9.0);
+  runFor(*backend, 9.0);
   EXPECT_EQ(backend->counters().wallCollisions, 5u);
 }
 
