@@ -69,7 +69,7 @@ double speedMomentum(const Simulation& simulation) {
 }
 
 /// Every stepper of the group in stepping order (the runs, then the baseline): its simulation,
-/// its divergence from run 0 now, and what is recorded of it.
+/// its divergence from run 0, and what is recorded of it.
 class Recorder {
  public:
   Recorder(const RunGroup& group, double departThreshold)
@@ -95,31 +95,37 @@ class Recorder {
     return i < group_.runCount() ? group_.run(i) : *group_.baseline();
   }
 
-  Divergence divergence(std::size_t i) const {
-    return i < group_.runCount() ? group_.divergence(i) : *group_.baselineDivergence();
+  /// Stepper i's figure among the group's divergences `now`: a run's, or the baseline's.
+  static const Divergence& divergence(const GroupDivergences& now, std::size_t i) {
+    return i < now.fromRunZero.size() ? now.fromRunZero[i] : *now.baseline;
   }
 
   void addSteppingTime(std::size_t i, Clock::duration took) { stepping_[i] += took; }
 
   /// After every step: notes the first time each run's divergence exceeds the threshold.
   void checkDeparture() {
+    const GroupDivergences now = group_.divergences();
     for (std::size_t i = 1; i < stepperCount(); ++i) {
       if (runs_[i].departedAt) continue;
-      if (divergence(i).rmsPositionDifference > departThreshold_)
-        runs_[i].departedAt = group_.time();
+      if (divergence(now, i).rmsPositionDifference > departThreshold_)
+        runs_[i].departedAt = now.time;
     }
   }
 
+  /// One row per stepper, all of one moment (GroupDivergences): the app's compare readout
+  /// shows the same figures.
   void writeCsvRows(CompareCsv& csv) const {
+    const GroupDivergences now = group_.divergences();
     for (std::size_t i = 0; i < stepperCount(); ++i)
-      csv.writeRow(runs_[i].label, simulation(i).metrics(), divergence(i));
+      csv.writeRow(runs_[i].label, simulation(i).metrics(), divergence(now, i));
   }
 
   void addChartPoints() {
+    const GroupDivergences now = group_.divergences();
     for (std::size_t i = 0; i < stepperCount(); ++i) {
       plots::CompareCurve& curve = curves_[i];
       curve.times.push_back(simulation(i).time());
-      curve.rmsDivergence.push_back(divergence(i).rmsPositionDifference);
+      curve.rmsDivergence.push_back(divergence(now, i).rmsPositionDifference);
       const Metrics metrics = simulation(i).metrics();
       curve.energyResidual.push_back(metrics.energyResidual);
       curve.initialEnergy = metrics.initialEnergy;
@@ -128,9 +134,10 @@ class Recorder {
 
   /// The runs as they ended.
   std::vector<ComparedRun> finish() {
+    const GroupDivergences now = group_.divergences();
     for (std::size_t i = 0; i < stepperCount(); ++i) {
       runs_[i].end = simulation(i).metrics();
-      runs_[i].rmsDivergence = divergence(i).rmsPositionDifference;
+      runs_[i].rmsDivergence = divergence(now, i).rmsPositionDifference;
       runs_[i].steppingSeconds = std::chrono::duration<double>(stepping_[i]).count();
     }
     return runs_;

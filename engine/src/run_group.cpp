@@ -152,6 +152,15 @@ std::optional<Divergence> RunGroup::baselineDivergence() const {
   return measureDivergence(run(0), *baseline_);
 }
 
+GroupDivergences RunGroup::divergences() const {
+  GroupDivergences now;
+  now.time = time();
+  for (std::size_t i = 0; i < runCount(); ++i)
+    now.fromRunZero.push_back(divergence(i));
+  now.baseline = baselineDivergence();
+  return now;
+}
+
 void RunGroup::load(const Scene& scene) {
   loadedScene_ = scene;
   forEachSimulation([&](Simulation& simulation) {

@@ -8,11 +8,15 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSpinBox>
+#include <QTemporaryDir>
 #include <QToolButton>
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <optional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -27,6 +31,7 @@
 #include "sidebar/backend_options_form.h"
 #include "sidebar/run_list_editor.h"
 #include "sidebar/settings_sidebar.h"
+#include "window/headless_run.h"
 #include "window/window_actions.h"
 
 namespace fooball::gui::testing {
@@ -121,18 +126,42 @@ void expectFigure(double shown, double value, const std::string& what) {
   EXPECT_NEAR(shown, value, 5e-3 * std::abs(value)) << what;
 }
 
-/// Every figure of every row of the readout is the run group's divergence of that run from run 0
+/// The moment the readout's first line names ("… (run 0) at t = 4.90 s"), in s; NaN if none.
+double readoutTime(const CompareReadout& readout) {
+  static const QRegularExpression moment(QStringLiteral(" at t = (\\S+) s$"));
+  const QRegularExpressionMatch match =
+      moment.match(readout.text().split(QLatin1Char('\n')).front());
+  bool ok = false;
+  const double time = match.hasMatch() ? match.captured(1).toDouble(&ok) : 0.0;
+  return ok ? time : std::nan("");
+}
+
+/// Every run's divergence from run 0 (index = run index) and the baseline's at one moment, each
+/// measured on its own as `fooball-cli compare` measures its rows.
+struct Moment {
+  std::vector<Divergence> fromRunZero;
+  std::optional<Divergence> baseline;
+};
+
+Moment momentOf(const RunGroup& group) {
+  Moment moment;
+  for (std::size_t i = 0; i < group.runCount(); ++i)
+    moment.fromRunZero.push_back(group.divergence(i));
+  moment.baseline = group.baselineDivergence();
+  return moment;
+}
+
+/// Every figure of every row of the readout is `expected`'s divergence of that run from run 0
 /// (and the baseline's), to the digits shown, and the rows name the runs in order.
 void expectReadoutShows(const CompareReadout& readout, const RunController& runs,
-                        const char* when) {
-  const RunGroup& group = runs.group();
+                        const Moment& expected, const std::string& when) {
   const std::vector<ReadoutRow> rows = readoutRows(readout);
-  const std::size_t runRows = group.runCount() - 1;
-  ASSERT_EQ(rows.size(), runRows + (group.hasBaseline() ? 1 : 0))
+  const std::size_t runRows = expected.fromRunZero.size() - 1;
+  ASSERT_EQ(rows.size(), runRows + (expected.baseline ? 1 : 0))
       << when << ": " << readout.text().toStdString();
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const bool baseline = i == runRows;
-    const Divergence divergence = baseline ? *group.baselineDivergence() : group.divergence(i + 1);
+    const Divergence divergence = baseline ? *expected.baseline : expected.fromRunZero[i + 1];
     const std::string what = std::string(when) + ", row " + rows[i].label.toStdString();
     EXPECT_EQ(rows[i].label,
               baseline ? QStringLiteral("chaos baseline") : runs.label(static_cast<int>(i + 1)))
@@ -144,6 +173,14 @@ void expectReadoutShows(const CompareReadout& readout, const RunController& runs
                  what + " energy %");
     expectFigure(rows[i].momentum, divergence.momentumDifference, what + " momentum");
   }
+}
+
+/// The readout shows the run group's figures of now, and says so.
+void expectReadoutShows(const CompareReadout& readout, const RunController& runs,
+                        const char* when) {
+  expectReadoutShows(readout, runs, momentOf(runs.group()), when);
+  EXPECT_NEAR(readoutTime(readout), runs.group().time(), 0.005)
+      << when << ": " << readout.text().toStdString();
 }
 
 TEST_F(CompareMode, TheReadoutShowsTheRunGroupsOwnDivergenceNumbers) {
@@ -183,6 +220,44 @@ TEST_F(CompareMode, PausingShowsTheReadoutOfTheStatePausedOn) {
   frames(121);  // the readout refreshes every 6 frames: its last refresh is a frame old
   window->actions().pause()->trigger();
   expectReadoutShows(*window->compareReadout(), runs(), "paused after 121 frames");
+}
+
+TEST_F(CompareMode, TheReadoutSaysItsMomentAndEveryFigureIsOfThatMoment) {
+  // While the runs step, the readout refreshes a few times a second from the state before a
+  // frame's steps: whatever moment it shows, it names it, and all its figures are of it.
+  open(fooball::testing::gas(80), "elastic", {"box2d", "exact"});
+  ASSERT_TRUE(group().hasBaseline());
+  std::map<double, Moment> moments;  // by simulated time, after every frame
+  moments[group().time()] = momentOf(group());
+  for (int frame = 0; frame < 125; ++frame) {
+    frames(1);
+    moments[group().time()] = momentOf(group());
+  }
+  const double shown = readoutTime(*window->compareReadout());
+  ASSERT_FALSE(std::isnan(shown)) << window->compareReadout()->text().toStdString();
+  // The readout's time has two decimals; frames are 1/60 s apart: one moment within 0.005 s.
+  const auto at = moments.lower_bound(shown - 0.005);
+  ASSERT_TRUE(at != moments.end() && at->first < shown + 0.005) << shown;
+  EXPECT_LE(at->first, group().time());
+  EXPECT_GT(at->first, group().time() - 7 * kFrame) << "a refresh comes every 6 frames";
+  expectReadoutShows(*window->compareReadout(), runs(), at->second,
+                     "at the t = " + std::to_string(shown) + " s the readout names");
+  // The figures move between frames, so a readout of another moment would be caught.
+  const Moment& earlier = std::prev(at)->second;
+  EXPECT_NE(earlier.fromRunZero[1].rmsPositionDifference,
+            at->second.fromRunZero[1].rmsPositionDifference);
+}
+
+TEST_F(CompareMode, AScreenshotShowsTheReadoutOfTheMomentTheStatusBarShows) {
+  // `fooball --frames 300 --screenshot`: the status bar says t = 5.00 s, and so must the readout,
+  // with 5.00 s's figures (it showed those of 4.90 s, its last refresh, 6 frames before).
+  open(fooball::testing::gas(80), "elastic", {"box2d"});
+  QTemporaryDir directory;
+  ASSERT_EQ(
+      runHeadless(*window, 300, directory.filePath(QStringLiteral("shot.png")), QSize(1280, 800)),
+      0);
+  ASSERT_NEAR(group().time(), 5.0, 1e-9);
+  expectReadoutShows(*window->compareReadout(), runs(), "in the screenshot after 300 frames");
 }
 
 /// What one run (or the baseline) was at a moment: its metrics and its divergence from run 0.

@@ -36,12 +36,7 @@ void RunFeed::sampleCharts() {
 
 void RunFeed::showReadouts() {
   const RunGroup& group = runs_.group();
-  if (!to_.compareReadout.isHidden()) {
-    std::vector<Divergence> divergences;
-    for (std::size_t i = 0; i < group.runCount(); ++i)
-      divergences.push_back(group.divergence(i));
-    to_.compareReadout.showDivergences(divergences, group.baselineDivergence());
-  }
+  if (!to_.compareReadout.isHidden()) to_.compareReadout.showDivergences(group.divergences());
   // The deepest-overlap search is O(N log N): only for a table someone can see.
   RunCounters* counters = to_.sidebar.counters();
   if (!to_.sidebarDock.isHidden() && counters->isVisible()) {

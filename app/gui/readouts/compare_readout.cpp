@@ -20,6 +20,11 @@ QString signedFigure(double value) {
 
 const QString kNoFigure = QStringLiteral("—");
 
+/// " at t = 4.90 s", to the status bar's digits; nothing before the first figures.
+QString momentText(const std::optional<double>& time) {
+  return time ? CompareReadout::tr(" at t = %1 s").arg(*time, 0, 'f', 2) : QString();
+}
+
 QLabel* cell(const QString& text, const char* role, const QString& toolTip) {
   auto* label = new QLabel(text);
   label->setProperty("role", role);
@@ -100,9 +105,9 @@ void CompareReadout::showRuns(const QStringList& labels, bool baseline) {
   baselineShown_ = baseline;
   clearRows();
 
+  time_.reset();  // the figures read "—" until the next showDivergences()
+  showReference();
   const QString referenceLabel = labels.isEmpty() ? QString() : labels.front();
-  reference_->setText(tr("difference from <span style='color:%1'>●</span> <b>%2</b> (run 0)")
-                          .arg(colours::runColour(0).name(), referenceLabel.toHtmlEscaped()));
   int gridRow = 1;
   for (int run = 1; run < labels.size(); ++run) {
     const QString html = QStringLiteral("<span style='color:%1'>●</span> %2")
@@ -121,6 +126,13 @@ void CompareReadout::showRuns(const QStringList& labels, bool baseline) {
   }
 }
 
+void CompareReadout::showReference() {
+  const QString referenceLabel = labels_.isEmpty() ? QString() : labels_.front();
+  reference_->setText(
+      tr("difference from <span style='color:%1'>●</span> <b>%2</b> (run 0)%3")
+          .arg(colours::runColour(0).name(), referenceLabel.toHtmlEscaped(), momentText(time_)));
+}
+
 void CompareReadout::showFigures(Row& row, const std::optional<fooball::Divergence>& divergence) {
   if (!divergence) {
     for (QLabel* label : {row.rms, row.max, row.energy, row.momentum})
@@ -134,8 +146,10 @@ void CompareReadout::showFigures(Row& row, const std::optional<fooball::Divergen
   row.momentum->setText(figure(divergence->momentumDifference) + tr(" N·s"));
 }
 
-void CompareReadout::showDivergences(const std::vector<fooball::Divergence>& fromRunZero,
-                                     const std::optional<fooball::Divergence>& baseline) {
+void CompareReadout::showDivergences(const fooball::GroupDivergences& divergences) {
+  const std::vector<fooball::Divergence>& fromRunZero = divergences.fromRunZero;
+  time_ = divergences.time;
+  showReference();
   const std::size_t runRows = rows_.size() - (baselineShown_ ? 1 : 0);
   for (std::size_t i = 0; i < runRows; ++i) {
     const std::size_t run = i + 1;
@@ -143,12 +157,13 @@ void CompareReadout::showDivergences(const std::vector<fooball::Divergence>& fro
                               ? std::optional<fooball::Divergence>(fromRunZero[run])
                               : std::nullopt);
   }
-  if (baselineShown_) showFigures(rows_.back(), baseline);
+  if (baselineShown_) showFigures(rows_.back(), divergences.baseline);
 }
 
 QString CompareReadout::text() const {
   QStringList lines;
-  lines.append(tr("difference from %1 (run 0)").arg(labels_.isEmpty() ? QString() : labels_[0]));
+  lines.append(tr("difference from %1 (run 0)%2")
+                   .arg(labels_.isEmpty() ? QString() : labels_[0], momentText(time_)));
   for (const Row& row : rows_) {
     lines.append(tr("%1: RMS %2, max %3, energy %4, momentum %5")
                      .arg(row.label, row.rms->text(), row.max->text(), row.energy->text(),

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "fooball/divergence.h"
+#include "fooball/run_group.h"
 
 class QGridLayout;
 class QLabel;
@@ -17,7 +17,8 @@ namespace fooball::gui {
 /// from run 0 — RMS and largest position difference over balls of the same index, energy
 /// difference (J and relative to run 0's) and momentum difference — one row per run k ≥ 1 with
 /// its label in its run colour, and a grey row for the chaos baseline when it runs. Same scene,
-/// same forces: any difference is the methods', or chaos (the baseline row says how much).
+/// same forces: any difference is the methods', or chaos (the baseline row says how much). The
+/// header says the one moment every figure is of (the runs step on while it shows).
 class CompareReadout : public QFrame {
   Q_OBJECT
 
@@ -25,7 +26,7 @@ class CompareReadout : public QFrame {
   explicit CompareReadout(QWidget* parent = nullptr);
 
   /// All figures as plain text, one line per row ("label: RMS …, max …, energy …, momentum …"),
-  /// after a first line naming run 0.
+  /// after a first line naming run 0 and the moment ("… (run 0) at t = 4.90 s").
   QString text() const;
 
  public slots:
@@ -33,10 +34,9 @@ class CompareReadout : public QFrame {
   /// Rebuilds the rows only when these changed, so calling it on every change is cheap. The
   /// figures read "—" until the next showDivergences().
   void showRuns(const QStringList& labels, bool baseline);
-  /// Each run's divergence from run 0 (index = run index; [0] is run 0's own and not shown) and
-  /// the baseline's. A run without a figure, or the baseline without one, reads "—".
-  void showDivergences(const std::vector<fooball::Divergence>& fromRunZero,
-                       const std::optional<fooball::Divergence>& baseline);
+  /// Each run's divergence from run 0 and the baseline's at their moment, which the header
+  /// names. A run without a figure, or the baseline without one, reads "—".
+  void showDivergences(const fooball::GroupDivergences& divergences);
 
  private:
   /// One row of the table: a run k ≥ 1, or the baseline.
@@ -54,10 +54,13 @@ class CompareReadout : public QFrame {
              const char* role);
   static void showFigures(Row& row, const std::optional<fooball::Divergence>& divergence);
   void clearRows();
+  /// The header's first cell: run 0's name and, once figures are shown, their time.
+  void showReference();
 
   QGridLayout* grid_;
   QLabel* reference_;  ///< the header's first cell: which run the differences are from
   QStringList labels_;
+  std::optional<double> time_;  ///< s, of the figures shown (none before the first)
   bool baselineShown_ = false;
   bool rowsBuilt_ = false;  ///< showRuns() has run
   std::vector<Row> rows_;   ///< runs 1 … n−1, then the baseline's when shown

@@ -128,8 +128,10 @@ int runHeadless(MainWindow& window, int frames, const std::optional<QString>& sc
             << runs.labels().join(QStringLiteral(" vs ")).toStdString() << '\n';
 
   if (screenshotPath) {
+    // Everything of the moment the status bar shows: the readouts last refreshed frames ago.
     window.updateStatusBar();
     window.charts()->refresh();
+    window.feed().showReadouts();
     window.feed().showStatistics();
     QApplication::processEvents();
     if (!window.grab().save(*screenshotPath, "PNG")) {

@@ -22,6 +22,14 @@ struct BallStates {
   bool massChosen = false;      ///< RunGroup::massChosen
 };
 
+/// How far every run of a RunGroup is from run 0, all at one moment: what the app's compare
+/// readout shows and what `fooball-cli compare` writes as that moment's rows.
+struct GroupDivergences {
+  double time = 0.0;                    ///< s, the moment every figure is of
+  std::vector<Divergence> fromRunZero;  ///< index = run index; [0] is run 0's own (zeros)
+  std::optional<Divergence> baseline;   ///< the chaos baseline's, when it runs
+};
+
 /// How RunGroup::restoreBall puts a ball back: over the ball at its index, or before it.
 enum class BallPlacement { Replace, Insert };
 
@@ -89,6 +97,8 @@ class RunGroup {
   /// nullptr without a baseline.
   const Simulation* baseline() const { return baseline_.get(); }
   std::optional<Divergence> baselineDivergence() const;
+  /// Every run's divergence and the baseline's now, with the time they are of.
+  GroupDivergences divergences() const;
 
   // --- The scene ----------------------------------------------------------------------------
   /// The scene Restart and Reset go back to.
