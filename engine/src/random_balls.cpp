@@ -151,6 +151,10 @@ Vec2 randomDirection(SplitMix64& random) {
 
 }  // namespace
 
+std::size_t randomBallRoom(const Scene& scene, double maxRadius, std::size_t count) {
+  return freeSites(latticeFor(scene.box, maxRadius, count, scene.balls.size()), scene.balls).size();
+}
+
 void addRandomBalls(Scene& scene, const RandomBalls& spec) {
   checkSpec(spec, scene.balls.size());
   if (spec.count == 0) return;

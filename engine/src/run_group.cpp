@@ -201,21 +201,35 @@ BallDef RunGroup::ball(std::size_t index) const {
           reference.masses()[index], reference.colours()[index]};
 }
 
+Scene RunGroup::newBallRoom(std::size_t& copies) const {
+  Scene room = scene();
+  room.balls.clear();
+  copies = 0;
+  const auto add = [&](const Simulation& simulation) {
+    const Scene state = simulation.scene();
+    room.balls.insert(room.balls.end(), state.balls.begin(), state.balls.end());
+    ++copies;
+  };
+  for (const Run& run : runs_)
+    add(*run.simulation);
+  if (baseline_) add(*baseline_);
+  return room;
+}
+
+std::size_t RunGroup::mostBallsThatFit() const {
+  std::size_t copies = 0;
+  const Scene room = newBallRoom(copies);
+  return ballCount() + mostNewBallsThatFit(room, copies);
+}
+
 void RunGroup::setBallCount(std::size_t count) {
   const std::size_t current = ballCount();
   newBallScale_ = 1.0;
   if (count == current) return;
   PlacedBalls added;
   if (count > current) {
-    // New balls must clear the balls of every run, which differ once the runs diverge.
-    Scene room = scene();
-    room.balls.clear();
     std::size_t copies = 0;
-    forEachSimulation([&](Simulation& simulation) {
-      const Scene state = simulation.scene();
-      room.balls.insert(room.balls.end(), state.balls.begin(), state.balls.end());
-      ++copies;
-    });
+    const Scene room = newBallRoom(copies);
     added = placeNewBalls(room, copies, count - current, current, steps() + count);
     newBallScale_ = added.scale;
   }

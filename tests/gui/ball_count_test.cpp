@@ -1,5 +1,6 @@
 #include <QLabel>
 #include <QLocale>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <vector>
@@ -70,6 +71,37 @@ TEST_F(BallCount, TooManyToFitShowsAnErrorAndKeepsTheBalls) {
   spin(2);
   EXPECT_EQ(mainRun().ballCount(), 2u);
   EXPECT_FALSE(refusal->isVisible()) << "an accepted count clears it";
+}
+
+TEST_F(BallCount, ARefusalSaysHowManyWouldFitAndThatManyAreAccepted) {
+  Scene scene = fooball::testing::emptyBox(2.0, 2.0);
+  scene.balls = {fooball::testing::ball({1.0, 1.0}, {0.0, 0.0}, 0.5)};
+  open(scene);
+  spin(SettingsSidebar::kMaxBallCount);
+  QLabel* refusal = window->sidebar()->ballCountRefusal();
+  ASSERT_TRUE(refusal->isVisible());
+  const QRegularExpressionMatch match =
+      QRegularExpression(QStringLiteral("at most (\\S+) fit$")).match(refusal->text());
+  ASSERT_TRUE(match.hasMatch()) << refusal->text().toStdString();
+  bool ok = false;
+  const int most = QLocale().toInt(match.captured(1), &ok);
+  ASSERT_TRUE(ok) << match.captured(1).toStdString();
+  // 4 − π/4 = 3.21 m² free; new balls shrink to 1% of the 0.5 m ball at most, radius 0.005 m,
+  // in lattice cells of (0.005 m · 2 / 0.8)²: 3.21 · 0.16 / 0.005² = 20,573 new balls by area at
+  // most, beside the one there.
+  EXPECT_GT(most, 100);
+  EXPECT_LE(most, 20574);
+
+  spin(most + 1);
+  EXPECT_EQ(mainRun().ballCount(), 1u) << "at most means one more is refused";
+  EXPECT_TRUE(refusal->isVisible());
+  EXPECT_TRUE(refusal->text().endsWith(QStringLiteral("at most %L1 fit").arg(most)))
+      << refusal->text().toStdString();
+
+  spin(most);
+  EXPECT_EQ(mainRun().ballCount(), std::size_t(most)) << "what the refusal names is accepted";
+  EXPECT_FALSE(refusal->isVisible());
+  EXPECT_EQ(mainRun().metrics().maxOverlap, 0.0);
 }
 
 TEST_F(BallCount, ChangesApplyToBothRunsInCompareMode) {

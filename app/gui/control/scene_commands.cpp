@@ -90,11 +90,17 @@ bool SceneCommands::setBallCount(std::size_t count) {
   try {
     parts_.runs.setBallCount(count);
   } catch (const SceneError& error) {
-    // Beside the field, where the user looks, until a count is accepted.
-    parts_.sidebar.showBallCountRefusal(QObject::tr("%L1 balls refused (%L2 kept): %3")
-                                            .arg(count)
-                                            .arg(before)
-                                            .arg(QString::fromStdString(error.what())));
+    // Beside the field, where the user looks, until a count is accepted; with what would fit
+    // when more balls were asked for than fit.
+    QString refusal = QObject::tr("%L1 balls refused (%L2 kept): %3")
+                          .arg(count)
+                          .arg(before)
+                          .arg(QString::fromStdString(error.what()));
+    if (count > before) {
+      const std::size_t most = parts_.runs.group().mostBallsThatFit();
+      if (most < count) refusal += QObject::tr(" — at most %L1 fit").arg(most);
+    }
+    parts_.sidebar.showBallCountRefusal(refusal);
     parts_.sidebar.showBallCount(before);
     return false;
   }

@@ -23,4 +23,8 @@ struct PlacedBalls {
 PlacedBalls placeNewBalls(const Scene& room, std::size_t runs, std::size_t count,
                           std::size_t firstIndex, std::uint64_t seed);
 
+/// The most new balls placeNewBalls places in `room` (its runs' balls, as there): it throws for
+/// one more. What fits depends only on the count, not on the seed. O(log(count) × box cells).
+std::size_t mostNewBallsThatFit(const Scene& room, std::size_t runs);
+
 }  // namespace fooball

@@ -26,4 +26,9 @@ struct RandomBalls {
 /// Throws SceneError("random_balls.count: ...") when they cannot fit.
 void addRandomBalls(Scene& scene, const RandomBalls& spec);
 
+/// How many balls of radius up to `maxRadius` (> 0) addRandomBalls finds room for in `scene`
+/// beside its balls when it places `count` (its lattice depends on the count): it refuses a
+/// count above this. Not the limit on the number of balls, kMaxBalls.
+std::size_t randomBallRoom(const Scene& scene, double maxRadius, std::size_t count);
+
 }  // namespace fooball

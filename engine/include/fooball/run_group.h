@@ -125,6 +125,9 @@ class RunGroup {
   /// Adds balls where there is room in every run (placeNewBalls), or removes the newest.
   /// Throws SceneError when they do not fit; nothing changes then.
   void setBallCount(std::size_t count);
+  /// The largest ball count setBallCount() takes now: the balls there and the most new balls
+  /// that fit beside every run's (placeNewBalls).
+  std::size_t mostBallsThatFit() const;
   /// The size of the balls the last setBallCount() added relative to those there (1: same).
   double newBallScale() const { return newBallScale_; }
   /// Replaces ball `index` in every run, or throws SceneError (BallError for a ball that
@@ -255,6 +258,9 @@ class RunGroup {
 
   std::unique_ptr<Backend> makeBackend(const RunSpec& spec) const;
   std::unique_ptr<Simulation> makeSimulation(const Scene& scene, const RunSpec& spec) const;
+  /// Where new balls go: every run's balls (and the baseline's) at once, as they differ once
+  /// the runs diverge; `copies` says how many sets of balls it holds.
+  Scene newBallRoom(std::size_t& copies) const;
   /// Run 0's state with every ball moved kBaselineDisplacement in a seeded random direction.
   Scene displacedScene() const;
   /// Every run and the baseline, in stepping order.
