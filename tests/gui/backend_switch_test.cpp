@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "fooball/backend.h"
+#include "fooball/presets.h"
 #include "gui_fixture.h"
 #include "registry.h"
 #include "sidebar/run_list_editor.h"
@@ -55,6 +56,24 @@ TEST_F(BackendSwitch, OptionsFormListsTheChosenBackendsOptions) {
                 nullptr)
           << info.name << ": " << spec.name;
     }
+  }
+}
+
+TEST_F(BackendSwitch, SwitchingTheDefaultPresetToChipmunkMidRunAddsNoEnergy) {
+  // Issue 38 saw a +35 J jump in the energy chart on switching the default preset's run to
+  // chipmunk mid-run; not reproduced on 6de8ff6. Measured at t = 5 s: the switch itself changes
+  // nothing, and chipmunk's first six steps change the total by +0.02 to +0.23 J (switching at
+  // every 0.25 s from 0.25 to 12 s with fooball-cli, the most it rose in 0.5 s was 0.45 J). 1 J
+  // is 4× what was measured here, and 1/35 of the jump reported.
+  open(loadPreset("default"));
+  frames(300);
+  const double before = mainRun().metrics().sums.totalEnergy();
+  choose(window->sidebar()->runList()->backendBox(0), QStringLiteral("chipmunk"));
+  ASSERT_EQ(runs().label(0), QStringLiteral("chipmunk"));
+  EXPECT_EQ(mainRun().metrics().sums.totalEnergy(), before) << "the switch keeps the state";
+  for (int frame = 1; frame <= 6; ++frame) {
+    frames(1);
+    EXPECT_NEAR(mainRun().metrics().sums.totalEnergy(), before, 1.0) << frame << " frames after";
   }
 }
 
