@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -438,6 +439,29 @@ TEST(RunGroup, ThousandsOfNewBallsInTheDefaultPresetOverlapNothingBeforeTheFirst
   EXPECT_LT(group.newBallScale(), 1.0) << "they had to be smaller to fit";
   EXPECT_EQ(group.run(0).metrics().maxOverlap, 0.0);
   EXPECT_NO_THROW(validateScene(group.run(0).scene(), "after setBallCount"));
+}
+
+TEST(RunGroup, MostBallsThatFitIsTheLargestCountSetBallCountTakes) {
+  // Two runs and the baseline, moved on: new balls must clear every copy's balls.
+  RunGroup group = groupOf(gas(3, 7, 1.0, 1.0), {"elastic", "elastic:substeps=1"});
+  group.setBaseline(true);
+  group.runFor(1.0);
+  const std::size_t most = group.mostBallsThatFit();
+  // New balls shrink to 1% of the largest ball there at most, one per lattice cell of side
+  // 2·r/0.8: by area, at most 0.16 · (free area) / r² beside the 3 balls (r = 1% of the largest).
+  double free = 1.0;
+  double largest = 0.0;
+  for (const BallDef& ball : group.run(0).scene().balls) {
+    free -= std::numbers::pi * ball.radius * ball.radius;
+    largest = std::max(largest, ball.radius);
+  }
+  const double smallest = 0.01 * largest;
+  EXPECT_GT(most, 100u);
+  EXPECT_LE(double(most), 3.0 + 0.16 * free / (smallest * smallest));
+  EXPECT_THROW(group.setBallCount(most + 1), SceneError) << "at most " << most;
+  EXPECT_EQ(group.ballCount(), 3u) << "a refused count changes nothing";
+  group.setBallCount(most);
+  EXPECT_EQ(group.ballCount(), most);
 }
 
 TEST(RunGroup, RestartKeepsTheBallCountAndGivesTheSameStateEachTime) {
