@@ -1,8 +1,8 @@
 #include "readouts/statistics_panel.h"
 
-#include <QHBoxLayout>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -51,7 +51,8 @@ StatisticsPanel::StatisticsPanel(QWidget* parent)
   tableScroll_->setWidget(readout_);
   tableScroll_->setWidgetResizable(true);
   tableScroll_->setFrameShape(QFrame::NoFrame);
-  auto* layout = new QHBoxLayout(this);
+  // The histogram above its table: the statistics share the charts' column beside the box.
+  auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   layout->addWidget(histogram_, 1);
