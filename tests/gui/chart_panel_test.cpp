@@ -11,7 +11,6 @@
 #include <QRegularExpression>
 #include <QSplitterHandle>
 #include <QTemporaryDir>
-#include <QToolBar>
 #include <QToolButton>
 #include <algorithm>
 #include <array>
@@ -22,6 +21,7 @@
 #include "chart_csv.h"
 #include "chart_grid.h"
 #include "chart_reading.h"
+#include "chart_toolbar.h"
 #include "run_palette.h"
 #include "series_points.h"
 #include "time_chart.h"
@@ -942,9 +942,12 @@ TEST_F(FourRunsAndBaseline, PngHasItsCaptionAboveTheChartsAndNoSplitterGrips) {
 TEST_F(ChartPanelTest, EveryToggleShowsACheckBoxOnAndOff) {
   // Off, a text-only tool button reads as a plain label: each switch carries a box that is
   // ticked when on and empty when off.
-  const QToolBar* toolBar = panel.findChild<QToolBar*>();
+  const ChartToolBar* toolBar = panel.findChild<ChartToolBar*>();
   ASSERT_NE(toolBar, nullptr);
-  EXPECT_EQ(toolBar->toolButtonStyle(), Qt::ToolButtonTextBesideIcon);
+  const QList<QToolButton*> buttons = toolBar->findChildren<QToolButton*>();
+  EXPECT_EQ(buttons.size(), 10) << "one button per switch";
+  for (const QToolButton* button : buttons)
+    EXPECT_EQ(button->toolButtonStyle(), Qt::ToolButtonTextBesideIcon);
   int toggles = 0;
   for (QAction* action : toolBar->actions()) {
     if (!action->isCheckable()) continue;

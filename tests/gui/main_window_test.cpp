@@ -201,7 +201,7 @@ TEST_F(MainWindowTest, ResetLayoutBringsBackHiddenAndFloatingDocks) {
   EXPECT_TRUE(window->chartsDock()->isVisible());
   EXPECT_FALSE(window->sidebarDock()->isFloating());
   EXPECT_EQ(window->dockWidgetArea(window->sidebarDock()), Qt::RightDockWidgetArea);
-  EXPECT_EQ(window->dockWidgetArea(window->chartsDock()), Qt::BottomDockWidgetArea);
+  EXPECT_EQ(window->dockWidgetArea(window->chartsDock()), Qt::RightDockWidgetArea);
   expectFullyOn(QGuiApplication::primaryScreen()->availableGeometry(), *window);
   EXPECT_GT(window->view()->width() * window->view()->height(),
             window->chartsDock()->width() * window->chartsDock()->height())

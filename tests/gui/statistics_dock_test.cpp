@@ -62,7 +62,8 @@ TEST_F(StatisticsDock, ShowOptionOpensItInFrontOfTheCharts) {
   EXPECT_TRUE(toggle()->isChecked());
   EXPECT_FALSE(onScreen(window->charts())) << "the charts' tab is behind it";
   EXPECT_GT(statistics().refreshCount(), 0) << "measured as soon as it was shown";
-  EXPECT_EQ(window->dockWidgetArea(window->statisticsDock()), Qt::BottomDockWidgetArea);
+  EXPECT_EQ(window->dockWidgetArea(window->statisticsDock()), Qt::RightDockWidgetArea)
+      << "a tab of the charts, beside the box";
 }
 
 TEST_F(StatisticsDock, ViewActionOpensAndClosesItAndResetLayoutClosesIt) {

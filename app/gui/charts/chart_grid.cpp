@@ -39,12 +39,25 @@ int chartColumns(int charts, QSize area) {
   return best;
 }
 
+int chartsThatFit(int charts, QSize area, int chartHeight) {
+  // The most charts whose rows, at the columns chartColumns() gives them, are all tall enough.
+  for (int count = charts; count > 1; --count) {
+    const int columns = chartColumns(count, area);
+    const int rows = (count + columns - 1) / columns;
+    if (rows * chartHeight + (rows - 1) * kChartSpacing <= area.height()) return count;
+  }
+  return 1;
+}
+
 ChartGrid::ChartGrid(QWidget* parent) : QWidget(parent), layout_(new QGridLayout(this)) {
   layout_->setContentsMargins(0, 0, 0, 0);
   layout_->setSpacing(kChartSpacing);
 }
 
-void ChartGrid::arrange(const std::vector<TimeChart*>& shown, QSize area) {
+void ChartGrid::arrange(const std::vector<TimeChart*>& shown, const std::vector<TimeChart*>& hidden,
+                        QSize area) {
+  for (TimeChart* chart : hidden)
+    chart->hide();
   const int columns = chartColumns(int(shown.size()), area);
   if (columns == columns_ && shown == charts_) return;
   for (TimeChart* chart : charts_)
@@ -55,17 +68,22 @@ void ChartGrid::arrange(const std::vector<TimeChart*>& shown, QSize area) {
     layout_->setColumnStretch(column, 0);
   columns_ = columns;
   charts_ = shown;
-  const int count = int(shown.size());
-  const int rows = columns > 0 ? (count + columns - 1) / columns : 0;
-  for (int i = 0; i < count; ++i) {
-    const int row = i / columns;
-    const int column = i % columns;
-    layout_->addWidget(shown[std::size_t(i)], row, column);
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    const int row = int(i) / columns;
+    const int column = int(i) % columns;
+    layout_->addWidget(shown[i], row, column);
     layout_->setRowStretch(row, 1);
     layout_->setColumnStretch(column, 1);
-    shown[std::size_t(i)]->setMarkerLabelsShown(row == 0);
-    shown[std::size_t(i)]->setTimeAxisLabelsShown(i + columns >= count || row == rows - 1);
+    shown[i]->setMarkerLabelsShown(row == 0);
+    shown[i]->show();
   }
+}
+
+QSize ChartGrid::minimumSizeHint() const {
+  QSize least;
+  for (const TimeChart* chart : charts_)
+    least = least.expandedTo(chart->minimumSizeHint().expandedTo(chart->minimumSize()));
+  return least;
 }
 
 void alignPlotAreas(const std::vector<TimeChart*>& shown) {

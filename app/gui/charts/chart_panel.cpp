@@ -4,7 +4,8 @@
 #include <QCoreApplication>
 #include <QLabel>
 #include <QPalette>
-#include <QScrollArea>
+#include <QResizeEvent>
+#include <QTabBar>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -74,6 +75,21 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   legendPalette.setColor(QPalette::WindowText, chart_colours::kLabel);
   runLegend_->setPalette(legendPalette);
 
+  // Which chart leads when not all fit: the panel shows whole charts only, as many as fit, and
+  // this selector reaches the others.
+  selector_ = new QTabBar;
+  selector_->setObjectName(QStringLiteral("chartSelector"));
+  selector_->setExpanding(false);
+  selector_->setDrawBase(false);
+  // Every name whole: the panel's column is never narrower than the four tabs.
+  selector_->setUsesScrollButtons(false);
+  selector_->setElideMode(Qt::ElideNone);
+  for (const QString& name : {tr("Momentum"), tr("Energy"), tr("Residual"), tr("Divergence")})
+    selector_->addTab(name);
+  selector_->setToolTip(tr("The chart shown first: the panel shows as many whole charts as fit"));
+  selector_->hide();
+  connect(selector_, &QTabBar::currentChanged, this, &ChartPanel::arrangeCharts);
+
   chartArea_ = new QWidget(this);
   chartArea_->setPalette(chartPalette);
   chartArea_->setAutoFillBackground(true);
@@ -81,6 +97,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   chartLayout->setContentsMargins(0, 0, 0, 0);
   chartLayout->setSpacing(0);
   chartLayout->addWidget(runLegend_);
+  chartLayout->addWidget(selector_);
   chartLayout->addWidget(chartGrid_, 1);
 
   auto* layout = new QVBoxLayout(this);
@@ -91,15 +108,9 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   connect(toolBar_, &ChartToolBar::windowSecondsChanged, this, &ChartPanel::setWindowSeconds);
   connect(toolBar_, &ChartToolBar::shownChanged, this, &ChartPanel::applyToggles);
   layout->addWidget(toolBar_);
-  // The charts scroll rather than push the window taller than the screen: four charts with
-  // their titles and axes need more height than a 1000×650 window has to spare.
-  scroll_ = new QScrollArea;
-  scroll_->setWidget(chartArea_);
-  scroll_->setWidgetResizable(true);
-  scroll_->setFrameShape(QFrame::NoFrame);
-  scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll_->viewport()->installEventFilter(this);
-  layout->addWidget(scroll_, 1);
+  // No scrolling: a chart cut by the panel's edge showed a strip of plot without its time axis.
+  chartArea_->installEventFilter(this);
+  layout->addWidget(chartArea_, 1);
 
   refreshTimer_ = new QTimer(this);
   refreshTimer_->setInterval(kRefreshIntervalMs);
@@ -243,22 +254,46 @@ void ChartPanel::applyToggles() {
   charts_[kDivergenceChart]->setQuantityShown(Quantity::RmsPositionDifference, shown.divergence);
 
   // A chart with nothing to show steps aside and the others share its room.
-  for (TimeChart* chart : charts_)
-    chart->setVisible(isChartShown(chart));
   arrangeCharts();
   viewOutOfDate_ = true;
   refresh();
 }
 
 bool ChartPanel::eventFilter(QObject* watched, QEvent* event) {
-  if (watched == scroll_->viewport() && event->type() == QEvent::Resize) arrangeCharts();
+  if (watched == chartArea_ && event->type() == QEvent::Resize) arrangeCharts();
   return QWidget::eventFilter(watched, event);
 }
 
 void ChartPanel::arrangeCharts() {
-  const QSize viewport = scroll_->viewport()->size();
-  const int legendHeight = runLegend_->isHidden() ? 0 : runLegend_->sizeHint().height();
-  chartGrid_->arrange(shownCharts(), QSize(viewport.width(), viewport.height() - legendHeight));
+  const std::vector<TimeChart*> on = shownCharts();
+  for (int chart = 0; chart < kChartCount; ++chart)
+    selector_->setTabVisible(chart, isChartShown(charts_[std::size_t(chart)]));
+  const int legendHeight = runLegend_->isHidden() ? 0 : runLegend_->heightForWidth(width());
+  const QSize whole(chartArea_->width(), chartArea_->height() - legendHeight);
+  int chartHeight = 0;
+  for (const TimeChart* chart : on)
+    chartHeight = std::max(chartHeight, chart->minimumHeight());
+  const int count = int(on.size());
+  int fit = chartsThatFit(count, whole, chartHeight);
+  if (fit < count) {
+    fit = chartsThatFit(count, whole - QSize(0, selector_->sizeHint().height()), chartHeight);
+  }
+  selector_->setVisible(fit < count);
+  // The selected chart first, then the ones after it (round to the first) as far as room goes.
+  const auto selected =
+      std::find(on.begin(), on.end(), charts_[std::size_t(std::max(selector_->currentIndex(), 0))]);
+  const std::size_t first =
+      fit < count && selected != on.end() ? std::size_t(selected - on.begin()) : 0;
+  std::vector<TimeChart*> placed;
+  std::vector<TimeChart*> hidden;
+  for (std::size_t i = 0; i < on.size(); ++i) {
+    TimeChart* chart = on[(first + i) % on.size()];
+    (int(i) < fit ? placed : hidden).push_back(chart);
+  }
+  for (TimeChart* chart : charts_) {
+    if (!isChartShown(chart)) hidden.push_back(chart);
+  }
+  chartGrid_->arrange(placed, hidden, whole);
 }
 
 void ChartPanel::alignPlotAreas() {

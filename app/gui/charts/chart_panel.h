@@ -13,7 +13,7 @@
 #include "fooball/metrics.h"
 
 class QLabel;
-class QScrollArea;
+class QTabBar;
 class QTimer;
 
 namespace fooball::gui {
@@ -111,7 +111,8 @@ class ChartPanel : public QWidget {
   std::vector<TimeChart*> shownCharts() const;
   /// Shows and hides curves and charts as the toggles say.
   void applyToggles();
-  /// Puts the charts shown into the grid, in as many columns as suit the panel's shape.
+  /// Puts as many of the charts shown as fit whole into the grid, in as many columns as suit
+  /// the panel's shape, from the one the selector names; the selector shows when some do not.
   void arrangeCharts();
   bool eventFilter(QObject* watched, QEvent* event) override;
   /// Lines up the charts' plot areas, so one time is at one x in every chart.
@@ -122,8 +123,8 @@ class ChartPanel : public QWidget {
   std::array<TimeChart*, kChartCount> charts_{};
   QWidget* chartArea_ = nullptr;  ///< the run legend and the charts: what exportPng draws
   QLabel* runLegend_ = nullptr;
+  QTabBar* selector_ = nullptr;  ///< the chart shown first, when not all fit
   ChartGrid* chartGrid_ = nullptr;
-  QScrollArea* scroll_ = nullptr;
 
   ChartToolBar* toolBar_ = nullptr;
 

@@ -2,8 +2,11 @@
 
 #include <QAction>
 #include <QDoubleSpinBox>
+#include <QHBoxLayout>
 #include <QSignalBlocker>
+#include <QToolButton>
 
+#include "flow_layout.h"
 #include "toggle_icon.h"
 
 namespace fooball::gui {
@@ -11,21 +14,22 @@ namespace fooball::gui {
 namespace {
 
 constexpr double kDefaultWindowSeconds = 20.0;
+/// px between switches in a group, and between groups and rows.
+constexpr int kToggleSpacing = 2;
+constexpr int kGroupSpacing = 10;
 
 }  // namespace
 
-ChartToolBar::ChartToolBar(QWidget* parent) : QToolBar(parent) {
-  // Every action here is a switch: a check box beside its name says which are on.
-  setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-  setIconSize(QSize(16, 16));
-  const QIcon toggle = toggleIcon();
+ChartToolBar::ChartToolBar(QWidget* parent) : QWidget(parent) {
+  auto* flow = new FlowLayout(this, kGroupSpacing, kToggleSpacing);
+  flow->setContentsMargins(4, 2, 4, 2);
 
-  wholeRun_ = addAction(tr("Whole run"));
-  wholeRun_->setObjectName(QStringLiteral("wholeRunToggle"));
-  wholeRun_->setCheckable(true);
-  wholeRun_->setIcon(toggle);
-  wholeRun_->setToolTip(
-      tr("Show the whole run (older parts at reduced resolution) instead of a scrolling window"));
+  QHBoxLayout* time = addGroup();
+  wholeRun_ = addToggle(
+      *time, tr("Whole run"),
+      tr("Show the whole run (older parts at reduced resolution) instead of a scrolling window"),
+      QStringLiteral("wholeRunToggle"));
+  wholeRun_->setChecked(false);
   connect(wholeRun_, &QAction::toggled, this, [this](bool whole) {
     windowSpin_->setEnabled(!whole);
     emit wholeRunToggled(whole);
@@ -40,32 +44,32 @@ ChartToolBar::ChartToolBar(QWidget* parent) : QToolBar(parent) {
   windowSpin_->setKeyboardTracking(false);
   windowSpin_->setToolTip(tr("Length of the scrolling window, in seconds of simulated time"));
   connect(windowSpin_, &QDoubleSpinBox::valueChanged, this, &ChartToolBar::windowSecondsChanged);
-  addWidget(windowSpin_);
+  time->addWidget(windowSpin_);
 
-  addSeparator();
-  momentumX_ = addQuantityToggle(tr("px"), tr("Momentum, x component: Σ m vx (N·s)"),
+  QHBoxLayout* momentum = addGroup();
+  momentumX_ = addQuantityToggle(*momentum, tr("px"), tr("Momentum, x component: Σ m vx (N·s)"),
                                  QStringLiteral("momentumXToggle"));
-  momentumY_ = addQuantityToggle(tr("py"), tr("Momentum, y component: Σ m vy (N·s)"),
+  momentumY_ = addQuantityToggle(*momentum, tr("py"), tr("Momentum, y component: Σ m vy (N·s)"),
                                  QStringLiteral("momentumYToggle"));
   momentumMagnitude_ =
-      addQuantityToggle(tr("|p|"), tr("Magnitude of the total momentum |Σ m v| (N·s)"),
+      addQuantityToggle(*momentum, tr("|p|"), tr("Magnitude of the total momentum |Σ m v| (N·s)"),
                         QStringLiteral("momentumMagnitudeToggle"));
-  addSeparator();
-  kinetic_ = addQuantityToggle(tr("kinetic"), tr("Kinetic energy Σ ½ m|v|² (J)"),
+  QHBoxLayout* energy = addGroup();
+  kinetic_ = addQuantityToggle(*energy, tr("kinetic"), tr("Kinetic energy Σ ½ m|v|² (J)"),
                                QStringLiteral("kineticToggle"));
-  potential_ = addQuantityToggle(tr("potential"),
+  potential_ = addQuantityToggle(*energy, tr("potential"),
                                  tr("Potential energy Σ −m (g·p), zero at the floor y = 0 (J)"),
                                  QStringLiteral("potentialToggle"));
-  total_ = addQuantityToggle(tr("total"), tr("Total energy: kinetic + potential (J)"),
+  total_ = addQuantityToggle(*energy, tr("total"), tr("Total energy: kinetic + potential (J)"),
                              QStringLiteral("totalToggle"));
-  addSeparator();
+  QHBoxLayout* residual = addGroup();
   residual_ = addQuantityToggle(
-      tr("residual"),
+      *residual, tr("residual"),
       tr("Energy budget residual: E(t) − E(0) − work by tools and edits + energy taken by drag. "
          "What is left is the method's own error (J)"),
       QStringLiteral("residualToggle"));
   relativeResidual_ = addQuantityToggle(
-      tr("÷|E₀|"),
+      *residual, tr("÷|E₀|"),
       tr("Show the residual relative to |E₀|, the run's total energy where its budget began "
          "(load or restart)"),
       QStringLiteral("relativeResidualToggle"));
@@ -73,23 +77,46 @@ ChartToolBar::ChartToolBar(QWidget* parent) : QToolBar(parent) {
     const QSignalBlocker blocker(relativeResidual_);  // the toggles are not all there yet
     relativeResidual_->setChecked(false);
   }
-  addSeparator();
+  QHBoxLayout* divergence = addGroup();
   divergence_ = addQuantityToggle(
-      tr("divergence"),
+      *divergence, tr("divergence"),
       tr("RMS position difference of every run from run 0, over balls of the same index (m, log "
          "scale), and the chaos baseline's (grey, dashed). Shown with two runs or more, or with "
          "the baseline"),
       QStringLiteral("divergenceToggle"));
 }
 
-QAction* ChartToolBar::addQuantityToggle(const QString& text, const QString& toolTip,
-                                         const QString& objectName) {
-  QAction* toggle = addAction(text);
+QHBoxLayout* ChartToolBar::addGroup() {
+  auto* group = new QWidget(this);
+  auto* row = new QHBoxLayout(group);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->setSpacing(kToggleSpacing);
+  layout()->addWidget(group);
+  return row;
+}
+
+QAction* ChartToolBar::addToggle(QHBoxLayout& group, const QString& text, const QString& toolTip,
+                                 const QString& objectName) {
+  // Every action here is a switch: a check box beside its name says which are on.
+  auto* toggle = new QAction(text, this);
   toggle->setObjectName(objectName);
   toggle->setToolTip(toolTip);
   toggle->setCheckable(true);
   toggle->setChecked(true);
   toggle->setIcon(toggleIcon());
+  addAction(toggle);
+  auto* button = new QToolButton;
+  button->setDefaultAction(toggle);
+  button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  button->setIconSize(QSize(16, 16));
+  button->setAutoRaise(true);
+  group.addWidget(button);
+  return toggle;
+}
+
+QAction* ChartToolBar::addQuantityToggle(QHBoxLayout& group, const QString& text,
+                                         const QString& toolTip, const QString& objectName) {
+  QAction* toggle = addToggle(group, text, toolTip, objectName);
   connect(toggle, &QAction::toggled, this, [this] {
     relativeResidual_->setEnabled(residual_->isChecked());
     emit shownChanged();

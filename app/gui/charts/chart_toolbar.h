@@ -1,16 +1,18 @@
 #pragma once
 
-#include <QToolBar>
+#include <QWidget>
 
 class QAction;
 class QDoubleSpinBox;
+class QHBoxLayout;
 
 namespace fooball::gui {
 
 /// The chart panel's switches: the time axis (the whole run, or a scrolling window of so many
 /// seconds) and, per chart, which quantities it draws. Each switch is a check box beside its
-/// name; the panel reads them (shown()) when one changes.
-class ChartToolBar : public QToolBar {
+/// name; the panel reads them (shown()) when one changes. The groups of switches wrap into rows
+/// in a narrow panel (the charts' column at 1000 px holds three), none hidden behind a "»".
+class ChartToolBar : public QWidget {
   Q_OBJECT
 
  public:
@@ -45,7 +47,12 @@ class ChartToolBar : public QToolBar {
   void shownChanged();
 
  private:
-  QAction* addQuantityToggle(const QString& text, const QString& toolTip,
+  /// A group of switches kept on one row: the flow wraps between groups, not inside one.
+  QHBoxLayout* addGroup();
+  /// A check box switch beside its name, as a tool button in `group`.
+  QAction* addToggle(QHBoxLayout& group, const QString& text, const QString& toolTip,
+                     const QString& objectName);
+  QAction* addQuantityToggle(QHBoxLayout& group, const QString& text, const QString& toolTip,
                              const QString& objectName);
 
   QAction* wholeRun_ = nullptr;

@@ -83,10 +83,14 @@ void SpeedHistogramChart::setRuns(const QStringList& labels, const QString& curv
   curvePen.setDashPattern({4.0, 2.0});
   curve_->setPen(curvePen);
   // The legend's swatches in the runs' full colours: the fills' faint ones read as black there.
+  // With more runs than one the table under the chart names each in its colour, and a legend of
+  // eight names beside the box would be cut to "el…": only the curve's entry stays.
+  const bool runsInLegend = histograms_.size() == 1;
   for (std::size_t run = 0; run < histograms_.size(); ++run) {
     for (QLegendMarker* marker : chart_->legend()->markers(histograms_[run])) {
       marker->setShape(QLegend::MarkerShapeRectangle);
       marker->setBrush(colours::runColour(static_cast<int>(run)));
+      marker->setVisible(runsInLegend);
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QLogValueAxis>
+#include <QResizeEvent>
 #include <QValueAxis>
 #include <algorithm>
 #include <cmath>
@@ -23,8 +24,8 @@ const QMargins kChartMargins(4, 2, 12, 2);
 /// px of plot height per value tick interval, and the most intervals: labels never crowd.
 constexpr double kPixelsPerValueTick = 32.0;
 constexpr int kMaxValueTicks = 6;
-/// px of plot height at least: two value tick intervals.
-constexpr double kMinPlotHeight = 2.0 * kPixelsPerValueTick;
+/// px of plot height at least: five value tick intervals, a plot one can read values off.
+constexpr double kMinPlotHeight = 5.0 * kPixelsPerValueTick;
 /// px Qt Charts puts around the title, the legend, the plot and each axis' labels and title,
 /// beyond their fonts' heights (measured on Qt 6.4 in screenshots: with less, it elides the
 /// labels and titles to "…").
@@ -222,12 +223,6 @@ void TimeChart::updateValueAxisTitle() {
   updateMinimumHeight();
 }
 
-void TimeChart::setTimeAxisLabelsShown(bool shown) {
-  timeAxis_->setLabelsVisible(shown);
-  timeAxis_->setTitleVisible(shown);
-  updateMinimumHeight();
-}
-
 void TimeChart::updateMinimumHeight() {
   const QFontMetricsF title(chart_->titleFont());
   const QFontMetricsF legend(chart_->legend()->font());
@@ -238,9 +233,13 @@ void TimeChart::updateMinimumHeight() {
       std::max(kMinPlotHeight, axisTitle.horizontalAdvance(valueAxis_->titleText()) + 8.0);
   const double legendHeight = chart_->legend()->isVisible() ? legend.height() : 0.0;
   double height = kChartMargins.top() + kChartMargins.bottom() + title.height() + legendHeight +
-                  plot + tickLabels.height() + kLayoutSpacing;
-  if (timeAxis_->isTitleVisible()) height += axisTitle.height();
+                  plot + tickLabels.height() + axisTitle.height() + kLayoutSpacing;
   setMinimumHeight(static_cast<int>(std::ceil(height)));
+}
+
+void TimeChart::resizeEvent(QResizeEvent* event) {
+  QChartView::resizeEvent(event);
+  setMinimumWidth(static_cast<int>(std::ceil(chart_->minimumSize().width())));
 }
 
 void TimeChart::setMarkerLabelsShown(bool shown) {

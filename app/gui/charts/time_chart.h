@@ -67,9 +67,6 @@ class TimeChart : public QChartView {
   /// The value axis' title: `name` and, in brackets, `unit` ("J"; "" for a ratio) with the power
   /// of ten the values are drawn in when they are tiny or huge (displayExponent).
   void setValueAxisTitle(const QString& name, const QString& unit);
-  /// The time axis' tick labels and title. The panel's charts share one time axis, so only the
-  /// bottom one labels it (the others keep its grid lines): room for taller plots.
-  void setTimeAxisLabelsShown(bool shown);
   void setMarkerLabelsShown(bool shown);
   /// The next redraw fits the value axis to the data afresh instead of keeping its range.
   void forgetValueScale();
@@ -101,6 +98,13 @@ class TimeChart : public QChartView {
   /// Extra margins (px) that line this chart's plot area up with its neighbours'.
   void setExtraMargins(PlotInsets pixels);
   PlotInsets extraMargins() const { return extraMargins_; }
+
+ protected:
+  /// QChartView keeps the largest least width its chart ever had (it widens its minimum to the
+  /// chart's on every resize, never narrows it): a chart once laid out wide, or with wide margins
+  /// for a moment, would hold its dock and the window at that width. The chart's own least
+  /// width, now, is the view's.
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   struct Curve {

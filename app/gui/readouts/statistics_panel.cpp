@@ -1,8 +1,8 @@
 #include "readouts/statistics_panel.h"
 
-#include <QHBoxLayout>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -21,8 +21,9 @@ constexpr int kSpeedTicks = 5;
 constexpr double kRestingRange = 1.0;
 /// px: narrower, the histogram's axis labels crowd.
 constexpr int kMinHistogramWidth = 260;
-/// The share of the panel's width the table takes at most; wider (many runs), it scrolls.
-constexpr double kMaxTableShare = 0.5;
+/// The share of the panel's height the table takes at most; taller, it scrolls (the histogram
+/// above keeps a readable plot in the charts' column at 1000×650).
+constexpr double kMaxTableShare = 0.45;
 
 /// Bins that split every tick interval of `scale` alike, into 1, 2, 4, 5 or 10, so that bin
 /// edges fall on round speeds: as close to `wanted` as that allows.
@@ -46,12 +47,13 @@ StatisticsPanel::StatisticsPanel(QWidget* parent)
   setObjectName(QStringLiteral("statisticsPanel"));
   histogram_->setMinimumWidth(kMinHistogramWidth);
   // The table scrolls rather than make the dock taller or wider than the window allows: eight
-  // runs' columns need more than a 1000 px window has beside the histogram.
+  // runs' columns are wider than the charts' column.
   tableScroll_ = new QScrollArea;
   tableScroll_->setWidget(readout_);
   tableScroll_->setWidgetResizable(true);
   tableScroll_->setFrameShape(QFrame::NoFrame);
-  auto* layout = new QHBoxLayout(this);
+  // The histogram above its table: the statistics share the charts' column beside the box.
+  auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   layout->addWidget(histogram_, 1);
@@ -67,27 +69,27 @@ void StatisticsPanel::showRuns(const QStringList& labels) {
   histogram_->setRuns(labels, labels.size() > 1 ? tr("2D Maxwell–Boltzmann at run 0's kT")
                                                 : tr("2D Maxwell–Boltzmann at this kT"));
   readout_->showRuns(labels);
-  fitTableWidth();
+  fitTableHeight();
 }
 
 void StatisticsPanel::hideEvent(QHideEvent* event) {
   QWidget::hideEvent(event);
-  // Closed, the panel still counts in its dock area's least width: it must not widen the window.
-  tableScroll_->setMinimumWidth(0);
+  // Closed, the panel still counts in its dock area's least size: it must not hold the window.
+  tableScroll_->setMinimumHeight(0);
 }
 
-void StatisticsPanel::fitTableWidth() {
-  // A scroll area asks for little room of its own: give it the table's width, up to a limit,
+void StatisticsPanel::fitTableHeight() {
+  // A scroll area asks for little room of its own: give it the table's height, up to a share,
   // while it is on screen (see hideEvent).
   if (!onScreen()) return;
-  const int scrollBar = tableScroll_->verticalScrollBar()->sizeHint().width();
-  tableScroll_->setMinimumWidth(
-      std::min(readout_->sizeHint().width() + scrollBar, int(kMaxTableShare * width())));
+  const int scrollBar = tableScroll_->horizontalScrollBar()->sizeHint().height();
+  tableScroll_->setMinimumHeight(
+      std::min(readout_->sizeHint().height() + scrollBar, int(kMaxTableShare * height())));
 }
 
 void StatisticsPanel::resizeEvent(QResizeEvent* event) {
   QWidget::resizeEvent(event);
-  fitTableWidth();
+  fitTableHeight();
 }
 
 void StatisticsPanel::restart() {
@@ -118,7 +120,7 @@ void StatisticsPanel::refresh(const RunGroup& group) {
     histograms.push_back(&run.histogram);
   histogram_->draw(histograms, snapshot.expectedCounts, *speedScale_);
   readout_->showStatistics(snapshot);
-  fitTableWidth();
+  fitTableHeight();
   ++refreshes_;
 }
 

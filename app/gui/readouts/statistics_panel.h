@@ -53,8 +53,8 @@ class StatisticsPanel : public QWidget {
   void hideEvent(QHideEvent* event) override;
 
  private:
-  /// The scroll area's least width: the table's, up to a share of the panel's.
-  void fitTableWidth();
+  /// The scroll area's least height: the table's, up to a share of the panel's.
+  void fitTableHeight();
 
   SpeedHistogramChart* histogram_;
   GasReadout* readout_;

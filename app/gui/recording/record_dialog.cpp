@@ -49,7 +49,9 @@ RecordDialog::RecordDialog(const RecordingTarget& target, QWidget& parent)
   area_ = new QComboBox;
   area_->addItem(tr("The box"), int(RecordArea::Box));
   area_->addItem(tr("The box and the charts"), int(RecordArea::BoxAndCharts));
-  area_->setToolTip(tr("The box with its legend row and run labels, or the charts under it too"));
+  area_->setToolTip(
+      tr("The box with its legend row and run labels, or the charts beside it too (as in the "
+         "window)"));
 
   size_ = new QComboBox;
   size_->addItem(QString(), QSize());  // as shown: its text follows the window (showEvent)

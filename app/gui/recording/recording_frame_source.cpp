@@ -16,6 +16,12 @@ bool chartsShown(const RecordingTarget& target, RecordArea area) {
          target.charts.isVisible();
 }
 
+/// Where the charts go in the picture: where they are in the window, in a column to the box's
+/// right (taller than wide) or in a strip under it.
+bool chartsBeside(const RecordingTarget& target) {
+  return target.charts.height() > target.charts.width();
+}
+
 }  // namespace
 
 RecordingFrameSource::RecordingFrameSource(const RecordingTarget& target, RecordArea area,
@@ -29,7 +35,9 @@ QSize RecordingFrameSource::shownSize(const RecordingTarget& target, RecordArea 
   QSize size = target.view.size();
   if (chartsShown(target, area)) {
     const QSize charts = target.charts.size();
-    size = {std::max(size.width(), charts.width()), size.height() + charts.height()};
+    size = chartsBeside(target)
+               ? QSize(size.width() + charts.width(), std::max(size.height(), charts.height()))
+               : QSize(std::max(size.width(), charts.width()), size.height() + charts.height());
   }
   return size;
 }
@@ -51,7 +59,8 @@ const QImage& RecordingFrameSource::grab() {
       // Redrawn for every frame rather than by the panel's 10-per-second timer, so a recording
       // shows the charts as of its own frames, however fast the machine.
       target_.charts.refresh();
-      painter.translate(0, target_.view.height());
+      painter.translate(chartsBeside(target_) ? QPoint(target_.view.width(), 0)
+                                              : QPoint(0, target_.view.height()));
       target_.charts.render(&painter, QPoint(), QRegion(),
                             QWidget::DrawWindowBackground | QWidget::DrawChildren);
     }

@@ -114,7 +114,7 @@ QString usageText() {
       "                     frame holds 1/fps s of simulation; works without a display\n"
       "  --fps N            the recording's frame rate: 60 (default), 50, 30, 25 or 24;\n"
       "                     a GIF takes 50, 25, 20 or 10\n"
-      "  --record-charts    record the charts under the box too\n"
+      "  --record-charts    record the charts beside the box too\n"
       "  --reset-settings   forget the remembered window layout, scene, backend and\n"
       "                     drawing options, and start as on first use\n"
       "  --version          print the version and exit\n"

@@ -32,7 +32,7 @@ struct CommandLine {
   /// then the video's size, 1280x720 unless given).
   std::optional<QString> record;
   int recordFramesPerSecond = 60;  ///< --fps
-  bool recordCharts = false;       ///< --record-charts: the charts under the box too
+  bool recordCharts = false;       ///< --record-charts: the charts beside the box too
   /// Drawing options to turn on: "temperature", "vectors", "centre-of-mass", "side-by-side";
   /// "statistics" opens the Statistics dock.
   QStringList show;

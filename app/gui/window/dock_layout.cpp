@@ -12,15 +12,62 @@ namespace fooball::gui {
 namespace {
 
 constexpr int kSidebarWidth = 300;  // px
+/// px of window width from which the charts get a column of their own beside the box; below,
+/// they share the settings' column as a tab. A chart readable at 160 px of plot needs about
+/// 270 px of height with its title, legend and time axis: under the box, at 1000×650 (and at
+/// 1440×900 with eight runs' compare table above the box) it left the box a strip.
+constexpr int kChartsBesideFrom = 1300;
+/// The charts column's share of the window's width: the box keeps the larger part of what the
+/// settings leave (layout_test.cpp).
+constexpr double kChartsShare = 0.25;
 
-/// The charts' first height: a quarter of the window's, and 30 px more from a window 900 px tall
-/// on, where that gives one row of charts its full height (title, legend, plot, time axis)
-/// without scrolling. At 16:9 the box stays the largest thing on screen from 1000×650 to
-/// 3840×2160, in compare mode too (layout_test.cpp).
-int firstChartsHeight(int windowHeight) {
-  constexpr double kShare = 0.25;
-  constexpr int kExtra = 30;  // px
-  return int(kShare * windowHeight) + std::clamp(windowHeight - 650, 0, 250) * kExtra / 250;
+int firstChartsWidth(int windowWidth) {
+  return int(kChartsShare * windowWidth);
+}
+
+/// The settings and the charts are where they start: open (a tab behind another is open too),
+/// docked in the right dock area.
+bool inTheirPlaces(const QMainWindow& window, QDockWidget& charts, QDockWidget& settings) {
+  const auto placed = [&window](QDockWidget& dock) {
+    return dock.toggleViewAction()->isChecked() && !dock.isFloating() &&
+           window.dockWidgetArea(&dock) == Qt::RightDockWidgetArea;
+  };
+  return placed(charts) && placed(settings);
+}
+
+/// Beside the box from kChartsBesideFrom px of width, with the tabs they share (the statistics);
+/// below it, they and those tabs join the settings' column as tabs, the charts in front (or the
+/// statistics, if they were the tab shown).
+void placeCharts(QMainWindow& window, QDockWidget& charts, QDockWidget& settings, bool sized) {
+  const bool tabbed = window.tabifiedDockWidgets(&charts).contains(&settings);
+  const bool beside = window.width() >= kChartsBesideFrom;
+  if (beside) {
+    if (tabbed) {
+      // Out of the group and back as a column right of the charts' (splitDockWidget() would
+      // only add it to the group again).
+      window.removeDockWidget(&settings);
+      window.addDockWidget(Qt::RightDockWidgetArea, &settings, Qt::Horizontal);
+      settings.show();
+    }
+    window.resizeDocks({&charts, &settings}, {firstChartsWidth(window.width()), kSidebarWidth},
+                       Qt::Horizontal);
+  } else {
+    if (!tabbed) {
+      QDockWidget* front = &charts;
+      const QList<QDockWidget*> sharing = window.tabifiedDockWidgets(&charts);
+      for (QDockWidget* dock : sharing) {
+        if (!dock->visibleRegion().isEmpty()) front = dock;
+      }
+      window.tabifyDockWidget(&settings, &charts);
+      for (QDockWidget* dock : sharing)
+        window.tabifyDockWidget(&charts, dock);
+      front->raise();
+    } else if (!sized) {
+      charts.raise();
+    }
+    // Both: resizeDocks() passes over a tab that is not shown, and either may be in front.
+    window.resizeDocks({&charts, &settings}, {kSidebarWidth, kSidebarWidth}, Qt::Horizontal);
+  }
 }
 
 }  // namespace
@@ -43,27 +90,20 @@ void tabWithChartsWhenOpened(QMainWindow& window, QDockWidget& statistics, QDock
 }
 
 void giveDocksFirstShare(QMainWindow& window, QDockWidget& charts, QDockWidget& settings) {
-  // Once the window has its size: the view gets most of it, the charts a strip below (they
-  // scroll when there are more than fit), the settings a column.
+  // Once the window has its size: the view gets most of it, the charts and the settings a
+  // column each, or the charts in front of the settings in one.
+  // After the layout requests already posted (a restored state's): resizeDocks() on docks not
+  // laid out yet leaves them at the width they had floating.
+  QTimer::singleShot(
+      0, &window, [&window, &charts, &settings] { placeCharts(window, charts, settings, false); });
+}
+
+void followWindowWidth(QMainWindow& window, QDockWidget& charts, QDockWidget& settings) {
+  // Only while the docks are where they start: a dock the user moved stays where it is.
   QMetaObject::invokeMethod(
       &window,
       [&window, &charts, &settings] {
-        window.resizeDocks({&charts}, {firstChartsHeight(window.height())}, Qt::Vertical);
-        window.resizeDocks({&settings}, {kSidebarWidth}, Qt::Horizontal);
-      },
-      Qt::QueuedConnection);
-}
-
-void keepChartsShare(QMainWindow& window, QDockWidget& charts, int oldHeight) {
-  // The dock keeps its height in pixels when the window changes, so shrinking a tall window
-  // would leave the box a sliver above the charts: keep the charts' share of the height instead
-  // (the share the user dragged them to, or the first one).
-  if (oldHeight == window.height() || charts.isHidden() || charts.isFloating()) return;
-  const double share = double(charts.height()) / double(oldHeight);
-  QMetaObject::invokeMethod(
-      &window,
-      [&window, &charts, share] {
-        window.resizeDocks({&charts}, {int(std::lround(share * window.height()))}, Qt::Vertical);
+        if (inTheirPlaces(window, charts, settings)) placeCharts(window, charts, settings, true);
       },
       Qt::QueuedConnection);
 }

@@ -28,6 +28,7 @@
 #include "view/simulation_view.h"
 #include "widgets/fitted_scroll_area.h"
 #include "widgets/number_field_keys.h"
+#include "widgets/strip_scroll_area.h"
 #include "widgets/user_messages.h"
 #include "widgets/wheel_needs_focus.h"
 #include "window/dock_layout.h"
@@ -52,7 +53,7 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   auto* layout = new QVBoxLayout(central);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
-  layout->addWidget(compareReadout_);
+  layout->addWidget(new StripScrollArea(compareReadout_));
   layout->addWidget(view_, 1);
   setCentralWidget(central);
 
@@ -118,21 +119,22 @@ void MainWindow::createDocks() {
   sidebarDock_->setWidget(sidebarScroll_);
   addDockWidget(Qt::RightDockWidgetArea, sidebarDock_);
 
+  // The charts beside the box, not under it: a readable chart needs more height than the box
+  // can spare, and a column of them fits as many whole charts as its height allows.
   charts_ = new ChartPanel;
   chartsDock_ = new QDockWidget(tr("Charts"), this);
   chartsDock_->setObjectName(QStringLiteral("chartsDock"));
   chartsDock_->setWidget(charts_);
-  addDockWidget(Qt::BottomDockWidgetArea, chartsDock_);
-  // The charts run the full width under the box and the settings: a wide strip fits four charts
-  // side by side, and the settings column, which scrolls anyway, leaves the box the height.
-  setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+  // In front of the settings at first, the least width a window needs (1000 px);
+  // giveDocksFirstShare gives them a column of their own on a wide window.
+  tabifyDockWidget(sidebarDock_, chartsDock_);
 
-  // The statistics take the charts' place as a tab when opened: the box keeps its room, and the
-  // wide strip fits the histogram beside its table.
+  // The statistics take the charts' place as a tab when opened: the box keeps its room.
   statistics_ = new StatisticsPanel;
   statisticsDock_ = new QDockWidget(tr("Statistics"), this);
   statisticsDock_->setObjectName(QStringLiteral("statisticsDock"));
   statisticsDock_->setWidget(statistics_);
+  // Under the box while closed: in the settings' area even a closed dock widens the window.
   addDockWidget(Qt::BottomDockWidgetArea, statisticsDock_);
   statisticsDock_->hide();
   tabWithChartsWhenOpened(*this, *statisticsDock_, *chartsDock_);
@@ -206,8 +208,8 @@ void MainWindow::resetLayout() {
 
 void MainWindow::resizeEvent(QResizeEvent* event) {
   QMainWindow::resizeEvent(event);
-  if (docksSized_ && event->oldSize().isValid())
-    keepChartsShare(*this, *chartsDock_, event->oldSize().height());
+  if (docksSized_ && event->oldSize().isValid() && event->oldSize().width() != width())
+    followWindowWidth(*this, *chartsDock_, *sidebarDock_);
 }
 
 void MainWindow::showEvent(QShowEvent* event) {
