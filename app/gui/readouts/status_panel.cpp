@@ -5,6 +5,7 @@
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -24,9 +25,11 @@ namespace {
 constexpr double kSlowStepNoticeSeconds = 1.0;
 constexpr int kRefreshMs = 250;
 constexpr int kNoticeMs = 8000;
-/// px: the widest a notice may grow, so that with eight runs at 1000 px the fields and the
-/// timeline all fit; the tooltip has it whole.
+/// px: the widest the notices shown may grow together, so that with eight runs at 1000 px the
+/// fields and the timeline all fit; each tooltip has its notice whole.
 constexpr int kNoticeWidth = 300;
+/// The property that keeps a notice's whole text while its label shows it cut short.
+constexpr char kWholeText[] = "wholeText";
 
 /// `paragraphs` as rich text, so the tooltip wraps at a readable width instead of
 /// running one line across the screen.
@@ -37,14 +40,25 @@ QString wrappedToolTip(const QStringList& paragraphs) {
   return html;
 }
 
-/// A notice: `heading` (with "%1" for `items`, joined by `separator`), cut short with "…" past
-/// kNoticeWidth, and `explanations` in its tooltip; hidden when there are no items.
+/// A notice: `heading` (with "%1" for `items`, joined by `separator`), and `explanations` in its
+/// tooltip; hidden when there are no items. shareNoticeWidth() cuts it to its share.
 void showNotice(QLabel& notice, const QString& heading, const QStringList& items,
                 const QString& separator, const QStringList& explanations) {
   notice.setVisible(!items.isEmpty());
-  notice.setText(notice.fontMetrics().elidedText(heading.arg(items.join(separator)), Qt::ElideRight,
-                                                 kNoticeWidth));
+  notice.setProperty(kWholeText, heading.arg(items.join(separator)));
   notice.setToolTip(wrappedToolTip(explanations));
+}
+
+/// The notices shown share kNoticeWidth: each is cut short with "…" past an equal share.
+void shareNoticeWidth(std::initializer_list<QLabel*> notices) {
+  const auto shown = std::count_if(notices.begin(), notices.end(),
+                                   [](const QLabel* notice) { return !notice->isHidden(); });
+  if (shown == 0) return;
+  const int share = kNoticeWidth / int(shown);
+  for (QLabel* notice : notices) {
+    notice->setText(notice->fontMetrics().elidedText(notice->property(kWholeText).toString(),
+                                                     Qt::ElideRight, share));
+  }
 }
 
 }  // namespace
@@ -109,6 +123,7 @@ void StatusPanel::update() {
   showCutShortSteps();
   showEnergyErrors();
   showCrossedLimits();
+  shareNoticeWidth({cutShort_, energy_, limits_});
   ballsAndTime_->setText(tr("%L1 balls, t = %2 s")
                              .arg(runs_.group().ballCount())
                              .arg(runs_.group().time(), 0, 'f', 2));
