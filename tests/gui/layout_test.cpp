@@ -10,6 +10,7 @@
 #include <QAbstractAxis>
 #include <QChart>
 #include <QChartView>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QFontMetricsF>
 #include <QScrollArea>
@@ -186,6 +187,33 @@ TEST_F(Layout, EveryChartOnScreenIsReadableAtEverySizeAndMode) {
             << where << ": the settings reachable";
       }
     }
+  }
+}
+
+TEST_F(Layout, TheChartSelectorBringsEachChartOnScreenWhenNotAllFit) {
+  // 1000×650 with eight runs: one whole chart fits; the selector names the four.
+  openAt(kChartSizes[0], kChartModes[1]);
+  auto* selector = window->charts()->findChild<QComboBox*>(QStringLiteral("chartSelector"));
+  ASSERT_NE(selector, nullptr);
+  ASSERT_TRUE(selector->isVisible());
+  ASSERT_EQ(selector->count(), 4);
+  for (int chart = 0; chart < selector->count(); ++chart) {
+    selector->setCurrentIndex(chart);
+    settle();
+    std::vector<QString> onScreen;
+    for (const QChartView* view : window->charts()->findChildren<QChartView*>()) {
+      if (view->isVisible() && !view->viewport()->visibleRegion().isEmpty())
+        onScreen.push_back(view->chart()->title());
+    }
+    ASSERT_FALSE(onScreen.empty()) << selector->currentText().toStdString();
+    // The chart chosen leads (titles start with the selector's name: "Energy budget residual"
+    // for "Residual" is named by its first word too).
+    const QString first = onScreen.front();
+    const QString name = selector->currentText();
+    EXPECT_TRUE(first.startsWith(name) || (name == QStringLiteral("Residual") &&
+                                           first.startsWith(QStringLiteral("Energy budget"))))
+        << name.toStdString() << " chosen, " << first.toStdString() << " shown";
+    expectChartsReadable("selector at " + name.toStdString());
   }
 }
 

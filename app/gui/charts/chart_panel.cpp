@@ -1,11 +1,12 @@
 #include "chart_panel.h"
 
 #include <QChart>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QLabel>
+#include <QListView>
 #include <QPalette>
 #include <QResizeEvent>
-#include <QTabBar>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -77,18 +78,13 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
 
   // Which chart leads when not all fit: the panel shows whole charts only, as many as fit, and
   // this selector reaches the others.
-  selector_ = new QTabBar;
+  selector_ = new QComboBox;
   selector_->setObjectName(QStringLiteral("chartSelector"));
-  selector_->setExpanding(false);
-  selector_->setDrawBase(false);
-  // Every name whole: the panel's column is never narrower than the four tabs.
-  selector_->setUsesScrollButtons(false);
-  selector_->setElideMode(Qt::ElideNone);
-  for (const QString& name : {tr("Momentum"), tr("Energy"), tr("Residual"), tr("Divergence")})
-    selector_->addTab(name);
+  selector_->addItems({tr("Momentum"), tr("Energy"), tr("Residual"), tr("Divergence")});
+  selector_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   selector_->setToolTip(tr("The chart shown first: the panel shows as many whole charts as fit"));
   selector_->hide();
-  connect(selector_, &QTabBar::currentChanged, this, &ChartPanel::arrangeCharts);
+  connect(selector_, &QComboBox::currentIndexChanged, this, &ChartPanel::arrangeCharts);
 
   chartArea_ = new QWidget(this);
   chartArea_->setPalette(chartPalette);
@@ -97,7 +93,7 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
   chartLayout->setContentsMargins(0, 0, 0, 0);
   chartLayout->setSpacing(0);
   chartLayout->addWidget(runLegend_);
-  chartLayout->addWidget(selector_);
+  chartLayout->addWidget(selector_, 0, Qt::AlignLeft);
   chartLayout->addWidget(chartGrid_, 1);
 
   auto* layout = new QVBoxLayout(this);
@@ -267,7 +263,8 @@ bool ChartPanel::eventFilter(QObject* watched, QEvent* event) {
 void ChartPanel::arrangeCharts() {
   const std::vector<TimeChart*> on = shownCharts();
   for (int chart = 0; chart < kChartCount; ++chart)
-    selector_->setTabVisible(chart, isChartShown(charts_[std::size_t(chart)]));
+    static_cast<QListView*>(selector_->view())
+        ->setRowHidden(chart, !isChartShown(charts_[std::size_t(chart)]));
   const int legendHeight = runLegend_->isHidden() ? 0 : runLegend_->heightForWidth(width());
   const QSize whole(chartArea_->width(), chartArea_->height() - legendHeight);
   int chartHeight = 0;

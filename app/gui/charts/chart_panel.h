@@ -13,7 +13,7 @@
 #include "fooball/metrics.h"
 
 class QLabel;
-class QTabBar;
+class QComboBox;
 class QTimer;
 
 namespace fooball::gui {
@@ -123,7 +123,7 @@ class ChartPanel : public QWidget {
   std::array<TimeChart*, kChartCount> charts_{};
   QWidget* chartArea_ = nullptr;  ///< the run legend and the charts: what exportPng draws
   QLabel* runLegend_ = nullptr;
-  QTabBar* selector_ = nullptr;  ///< the chart shown first, when not all fit
+  QComboBox* selector_ = nullptr;  ///< the chart shown first, when not all fit
   ChartGrid* chartGrid_ = nullptr;
 
   ChartToolBar* toolBar_ = nullptr;
