@@ -102,13 +102,14 @@ class Recorder {
 
   void addSteppingTime(std::size_t i, Clock::duration took) { stepping_[i] += took; }
 
-  /// After every step: notes the first time each run's divergence exceeds the threshold.
+  /// After every step: notes the first time each run's divergence exceeds the threshold. Only
+  /// the runs not yet departed are measured (O(balls) each, every step).
   void checkDeparture() {
-    const GroupDivergences now = group_.divergences();
     for (std::size_t i = 1; i < stepperCount(); ++i) {
       if (runs_[i].departedAt) continue;
-      if (divergence(now, i).rmsPositionDifference > departThreshold_)
-        runs_[i].departedAt = now.time;
+      const Divergence now =
+          i < group_.runCount() ? group_.divergence(i) : *group_.baselineDivergence();
+      if (now.rmsPositionDifference > departThreshold_) runs_[i].departedAt = group_.time();
     }
   }
 

@@ -201,14 +201,12 @@ BallDef RunGroup::ball(std::size_t index) const {
           reference.masses()[index], reference.colours()[index]};
 }
 
-Scene RunGroup::newBallRoom(std::size_t& copies) const {
+Scene RunGroup::newBallRoom() const {
   Scene room = scene();
   room.balls.clear();
-  copies = 0;
   const auto add = [&](const Simulation& simulation) {
     const Scene state = simulation.scene();
     room.balls.insert(room.balls.end(), state.balls.begin(), state.balls.end());
-    ++copies;
   };
   for (const Run& run : runs_)
     add(*run.simulation);
@@ -217,9 +215,7 @@ Scene RunGroup::newBallRoom(std::size_t& copies) const {
 }
 
 std::size_t RunGroup::mostBallsThatFit() const {
-  std::size_t copies = 0;
-  const Scene room = newBallRoom(copies);
-  return ballCount() + mostNewBallsThatFit(room, copies);
+  return ballCount() + mostNewBallsThatFit(newBallRoom(), stepperCount());
 }
 
 void RunGroup::setBallCount(std::size_t count) {
@@ -228,9 +224,7 @@ void RunGroup::setBallCount(std::size_t count) {
   if (count == current) return;
   PlacedBalls added;
   if (count > current) {
-    std::size_t copies = 0;
-    const Scene room = newBallRoom(copies);
-    added = placeNewBalls(room, copies, count - current, current, steps() + count);
+    added = placeNewBalls(newBallRoom(), stepperCount(), count - current, current, steps() + count);
     newBallScale_ = added.scale;
   }
   forEachSimulation([&](Simulation& simulation) {

@@ -54,10 +54,7 @@ ChartGrid::ChartGrid(QWidget* parent) : QWidget(parent), layout_(new QGridLayout
   layout_->setSpacing(kChartSpacing);
 }
 
-void ChartGrid::arrange(const std::vector<TimeChart*>& shown, const std::vector<TimeChart*>& hidden,
-                        QSize area) {
-  for (TimeChart* chart : hidden)
-    chart->hide();
+void ChartGrid::arrange(const std::vector<TimeChart*>& shown, QSize area) {
   const int columns = chartColumns(int(shown.size()), area);
   if (columns == columns_ && shown == charts_) return;
   for (TimeChart* chart : charts_)

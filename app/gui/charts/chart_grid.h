@@ -19,16 +19,15 @@ int chartColumns(int charts, QSize area);
 int chartsThatFit(int charts, QSize area, int chartHeight);
 
 /// The charts shown, side by side and on top of each other: a wide, short dock fits them in a
-/// row, a tall one in a column. Every chart placed is whole, with its own time axis; charts
-/// that do not fit are hidden (ChartPanel offers a selector for them).
+/// row, a tall one in a column. Every chart placed is whole, with its own time axis; ChartPanel
+/// hides those that do not fit and offers a selector for them.
 class ChartGrid : public QWidget {
  public:
   explicit ChartGrid(QWidget* parent);
 
-  /// Puts `shown` into the grid, in order, in as many columns as suit `area` (px), and hides
-  /// the charts in `hidden`; the first row carries the marker labels.
-  void arrange(const std::vector<TimeChart*>& shown, const std::vector<TimeChart*>& hidden,
-               QSize area);
+  /// Puts `shown` into the grid, in order, in as many columns as suit `area` (px); the first row
+  /// carries the marker labels.
+  void arrange(const std::vector<TimeChart*>& shown, QSize area);
   /// One chart's: the panel shows fewer charts when it gets less room, so the charts in the grid
   /// now must not hold the window at their size.
   QSize minimumSizeHint() const override;

@@ -52,8 +52,8 @@ ChartPanel::ChartPanel(QWidget* parent) : QWidget(parent) {
                                             TimeChart::ValueAxisKind::Logarithmic);
   charts_[kDivergenceChart]->setValueAxisTitle(tr("RMS Δposition"), tr("m"));
 
-  // The charts share the panel in a grid (arrangeCharts) rather than a splitter: a wide, short
-  // dock under the box fits them side by side, a tall one on top of each other.
+  // The charts share the panel in a grid (arrangeCharts) rather than a splitter: a column beside
+  // the box stacks them, a wide floating dock fits them side by side.
   chartGrid_ = new ChartGrid(this);
   for (TimeChart* chart : charts_) {
     chart->setParent(chartGrid_);
@@ -282,15 +282,12 @@ void ChartPanel::arrangeCharts() {
   const std::size_t first =
       fit < count && selected != on.end() ? std::size_t(selected - on.begin()) : 0;
   std::vector<TimeChart*> placed;
-  std::vector<TimeChart*> hidden;
-  for (std::size_t i = 0; i < on.size(); ++i) {
-    TimeChart* chart = on[(first + i) % on.size()];
-    (int(i) < fit ? placed : hidden).push_back(chart);
-  }
+  for (std::size_t i = 0; i < std::min(std::size_t(fit), on.size()); ++i)
+    placed.push_back(on[(first + i) % on.size()]);
   for (TimeChart* chart : charts_) {
-    if (!isChartShown(chart)) hidden.push_back(chart);
+    if (std::find(placed.begin(), placed.end(), chart) == placed.end()) chart->hide();
   }
-  chartGrid_->arrange(placed, hidden, whole);
+  chartGrid_->arrange(placed, whole);
 }
 
 void ChartPanel::alignPlotAreas() {

@@ -4,8 +4,6 @@
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QTimer>
-#include <algorithm>
-#include <cmath>
 
 namespace fooball::gui {
 

@@ -259,8 +259,8 @@ class RunGroup {
   std::unique_ptr<Backend> makeBackend(const RunSpec& spec) const;
   std::unique_ptr<Simulation> makeSimulation(const Scene& scene, const RunSpec& spec) const;
   /// Where new balls go: every run's balls (and the baseline's) at once, as they differ once
-  /// the runs diverge; `copies` says how many sets of balls it holds.
-  Scene newBallRoom(std::size_t& copies) const;
+  /// the runs diverge: a set of balls per stepper (stepperCount()).
+  Scene newBallRoom() const;
   /// Run 0's state with every ball moved kBaselineDisplacement in a seeded random direction.
   Scene displacedScene() const;
   /// Every run and the baseline, in stepping order.
