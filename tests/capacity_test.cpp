@@ -14,6 +14,7 @@
 #include "capacity_search.h"
 #include "fooball/scene_file.h"
 #include "fooball/standard_scenes.h"
+#include "standard_gas_file.h"
 #include "step_timing.h"
 #include "test_scenes.h"
 
@@ -231,7 +232,7 @@ TEST(CapacitySettingsCheck, WarmsUpForWholeStepsCoveringTheWarmUpTime) {
 TEST(StandardGasFile, IsTheCapacityToolsGasAtTwoThousandBallsBitForBit) {
   // docs/scenes/standard-gas-2000.json: the scene of the engines' table in README and
   // docs/accuracy.md, for `fooball-cli compare --scene` and the app's File > Open.
-  const Scene file = loadSceneFile(FOOBALL_STANDARD_GAS_FILE);
+  const Scene file = loadSceneFile(checkout::kStandardGasFile);
   const Scene gas = standardGas(2000, CapacitySettings{}.packingFraction);
   EXPECT_EQ(file.box, gas.box);
   EXPECT_EQ(file.world, gas.world);

@@ -24,6 +24,7 @@
 #include "fooball/scene_file.h"
 #include "fooball/simulation.h"
 #include "fooball/version.h"
+#include "program_path.h"
 #include "registry.h"
 
 extern char** environ;
@@ -127,7 +128,7 @@ class CliTest : public ::testing::Test {
   CliResult runCli(const std::vector<std::string>& arguments) const {
     const fs::path outPath = pathOf("stdout.txt");
     const fs::path errPath = pathOf("stderr.txt");
-    std::vector<std::string> words{FOOBALL_CLI_PATH};
+    std::vector<std::string> words{fooball::checkout::kCliPath};
     words.insert(words.end(), arguments.begin(), arguments.end());
     std::vector<char*> argv;
     for (std::string& word : words)
@@ -145,7 +146,7 @@ class CliTest : public ::testing::Test {
     posix_spawn_file_actions_destroy(&actions);
     CliResult result;
     if (spawnError != 0) {
-      ADD_FAILURE() << "cannot start " << FOOBALL_CLI_PATH << ": error " << spawnError;
+      ADD_FAILURE() << "cannot start " << fooball::checkout::kCliPath << ": error " << spawnError;
       return result;
     }
     int status = 0;

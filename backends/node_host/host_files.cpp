@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <system_error>
 
+#include "build_node_host_dir.h"
+
 namespace fooball::node_host {
 
 namespace {
@@ -34,7 +36,7 @@ std::optional<fs::path> hostDirectory() {
     const fs::path installed = bin->parent_path() / "share" / "fooball" / "js";
     if (holdsHost(installed)) return installed;
   }
-  const fs::path built = FOOBALL_BUILD_NODE_HOST_DIR;
+  const fs::path built = checkout::kBuildNodeHostDir;
   if (holdsHost(built)) return built;
   return std::nullopt;
 }

@@ -11,8 +11,8 @@ namespace fooball::node_host {
 /// node_modules/) as the build places it beside the programs, or as `cmake --install` ships it.
 /// Looked for, in order: $FOOBALL_NODE_HOST_DIR (for tests and for running from elsewhere);
 /// share/fooball/js beside the program's bin/ (installed); the build tree's share/fooball/js,
-/// which links to the source tree's backends/js (CMake sets FOOBALL_BUILD_NODE_HOST_DIR).
-/// Empty if none holds host.js.
+/// which links to the source tree's backends/js (its path: checkout::kBuildNodeHostDir, from
+/// CMake). Empty if none holds host.js.
 std::optional<std::filesystem::path> hostDirectory();
 
 /// The `node` program on PATH (Debian's nodejs package installs /usr/bin/node), if any.

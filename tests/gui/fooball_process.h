@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "program_path.h"
+
 namespace fooball::gui::testing {
 
 /// What a run of the fooball binary gave.
@@ -33,7 +35,7 @@ inline Outcome runFooball(const QStringList& arguments, const Variables& variabl
     environment.insert(name, value);
   QProcess process;
   process.setProcessEnvironment(environment);
-  process.start(QStringLiteral(FOOBALL_GUI_PATH), arguments);
+  process.start(QString::fromUtf8(checkout::kGuiPath), arguments);
   EXPECT_TRUE(process.waitForFinished(timeoutMs));
   return {process.exitCode(), QString::fromLocal8Bit(process.readAllStandardOutput()),
           QString::fromLocal8Bit(process.readAllStandardError())};

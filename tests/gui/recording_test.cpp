@@ -19,6 +19,7 @@
 #include "fooball_process.h"
 #include "frames/frame_loop.h"
 #include "gui_fixture.h"
+#include "program_path.h"
 #include "recording/record_dialog.h"
 #include "recording/recording_session.h"
 #include "window/window_actions.h"
@@ -168,7 +169,7 @@ TEST(FooballRecording, AnInterruptedRecordingIsAPlayableFile) {
   QProcess process;
   process.setProcessEnvironment(environment);
   process.start(
-      QStringLiteral(FOOBALL_GUI_PATH),
+      QString::fromUtf8(checkout::kGuiPath),
       {QStringLiteral("--preset"), QStringLiteral("gas"), QStringLiteral("--size"),
        QStringLiteral("320x320"), QStringLiteral("--record"), video, QStringLiteral("--fps"),
        QStringLiteral("25"), QStringLiteral("--frames"), QStringLiteral("100000")});

@@ -23,6 +23,7 @@
 
 #include "fooball/standard_scenes.h"
 #include "host_files.h"
+#include "program_path.h"
 
 extern char** environ;
 
@@ -82,7 +83,7 @@ class Cli {
   Cli(std::vector<std::string> arguments, std::vector<std::string> environment = {}) {
     errorsPath_ = fs::temp_directory_path() / ("fooball-node-host-cli-" + std::to_string(getpid()) +
                                                "-" + std::to_string(counter_++) + ".txt");
-    std::vector<std::string> words{FOOBALL_CLI_PATH};
+    std::vector<std::string> words{checkout::kCliPath};
     words.insert(words.end(), arguments.begin(), arguments.end());
     std::vector<char*> argv;
     for (std::string& word : words)

@@ -12,6 +12,7 @@
 
 #include "fooball/version.h"
 #include "registry.h"
+#include "source_doc_dir.h"
 #include "widgets/view_text.h"
 
 namespace fooball::gui {
@@ -30,7 +31,7 @@ QString docFile(const QString& name) {
   const QDir installed(QCoreApplication::applicationDirPath() +
                        QStringLiteral("/" FOOBALL_INSTALLED_DOC_DIR));
   if (installed.exists(name)) return installed.filePath(name);
-  return QDir(QStringLiteral(FOOBALL_SOURCE_DOC_DIR)).filePath(name);
+  return QDir(QString::fromUtf8(checkout::kSourceDocDir)).filePath(name);
 }
 
 namespace {
