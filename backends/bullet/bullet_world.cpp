@@ -10,10 +10,10 @@ namespace {
 btDefaultCollisionConstructionInfo poolsFor(std::size_t ballCount) {
   constexpr std::size_t kWallPlanes = 4;
   btDefaultCollisionConstructionInfo info;
-  const std::size_t pairs = ballCount * (kWallPlanes + kBallPairsPerBall);
-  const auto size = static_cast<int>(std::clamp<std::size_t>(
-      pairs, static_cast<std::size_t>(info.m_defaultMaxPersistentManifoldPoolSize),
-      static_cast<std::size_t>(std::numeric_limits<int>::max())));
+  // One ball's pairs at least: Bullet's pools need an element.
+  const std::size_t pairs = std::max<std::size_t>(ballCount, 1) * (kWallPlanes + kBallPairsPerBall);
+  const auto size = static_cast<int>(
+      std::min<std::size_t>(pairs, static_cast<std::size_t>(std::numeric_limits<int>::max())));
   info.m_defaultMaxPersistentManifoldPoolSize = size;
   info.m_defaultMaxCollisionAlgorithmPoolSize = size;
   return info;
