@@ -1,7 +1,9 @@
 #include "node_host.h"
 
 #include <charconv>
+#include <cstdlib>
 #include <cstring>
+#include <sstream>
 
 #include "host_files.h"
 
@@ -32,10 +34,19 @@ std::string quoteTail(const std::string& tail) {
   return joined.empty() ? "its stderr is empty" : "its stderr ends: " + joined;
 }
 
+/// node, the words of $FOOBALL_NODE_OPTIONS (node's and V8's own flags, split at spaces: also
+/// those NODE_OPTIONS refuses, such as --liftoff-only), and the host's script.
 std::vector<std::string> hostCommand(const std::string& hostScript) {
   const auto node = nodeProgram();
   // posix_spawnp looks for "node" on PATH itself; the resolved path only makes errors exact.
-  return {node ? node->string() : std::string("node"), hostScript};
+  std::vector<std::string> command{node ? node->string() : std::string("node")};
+  if (const char* options = std::getenv("FOOBALL_NODE_OPTIONS"); options != nullptr) {
+    std::istringstream words(options);
+    for (std::string word; words >> word;)
+      command.push_back(word);
+  }
+  command.push_back(hostScript);
+  return command;
 }
 
 int majorVersion(std::string_view version) {

@@ -14,8 +14,10 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -24,6 +26,7 @@
 #include "fooball/standard_scenes.h"
 #include "host_files.h"
 #include "program_path.h"
+#include "registry.h"
 
 extern char** environ;
 
@@ -61,6 +64,67 @@ TEST(NodeHost, KilledChildMidRunIsOneErrorAndIsReaped) {
     EXPECT_THAT(error.what(), HasSubstr("matter: the Node.js host was killed by signal 9"));
   }
   EXPECT_FALSE(processExists(child)) << "the child was not reaped: a zombie is left";
+}
+
+/// $FOOBALL_NODE_OPTIONS set for one test, and as it was after it.
+class NodeOptions {
+ public:
+  explicit NodeOptions(const char* options) {
+    if (const char* before = std::getenv(kName); before != nullptr) before_ = before;
+    ::setenv(kName, options, 1);
+  }
+  NodeOptions(const NodeOptions&) = delete;
+  NodeOptions& operator=(const NodeOptions&) = delete;
+  ~NodeOptions() {
+    if (before_) {
+      ::setenv(kName, before_->c_str(), 1);
+    } else {
+      ::unsetenv(kName);
+    }
+  }
+
+ private:
+  static constexpr const char* kName = "FOOBALL_NODE_OPTIONS";
+  std::optional<std::string> before_;
+};
+
+TEST(NodeHost, NodeGetsItsOptionsAndOneItRefusesIsOneError) {
+  const NodeOptions options("--stack-size=900 --no-such-option-of-node");
+  try {
+    NodeHost host("matter", hostScript());
+    ADD_FAILURE() << "node started with an option it does not have";
+  } catch (const HostError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("matter: "));
+    EXPECT_THAT(error.what(), HasSubstr("bad option: --no-such-option-of-node"));
+  }
+}
+
+TEST(NodeHost, WebAssemblyStepsBitForBitTheSameInEitherOfV8sTiers) {
+  // scripts/test's sanitizer stages start the hosts with FOOBALL_NODE_OPTIONS=--liftoff-only:
+  // V8's baseline WebAssembly compiler alone. Its optimising tier (TurboFan) was a third of the
+  // CPU of the hosts those stages start, for runs too short to repay it. WebAssembly's arithmetic
+  // is defined bit for bit, so either tier must give the same run: each engine here runs once
+  // with the baseline compiler only and once with the optimising one only.
+  const Scene scene = standardGas(300, 0.2);
+  for (const char* engine : {"rapier", "box2d3"}) {
+    SCOPED_TRACE(engine);
+    std::vector<double> loaded;
+    std::vector<double> stepped[2];
+    const char* tiers[2] = {"--liftoff-only", "--no-liftoff"};
+    for (int tier = 0; tier < 2; ++tier) {
+      const NodeOptions options(tiers[tier]);
+      NodeHost host(engine, hostScript());
+      host.setOptions(createBackend(engine)->options());
+      host.load(scene);
+      loaded.assign(host.state().begin(), host.state().end());
+      for (int frame = 0; frame < 60; ++frame)
+        host.step(1.0 / 60.0, {});
+      stepped[tier].assign(host.state().begin(), host.state().end());
+    }
+    ASSERT_EQ(stepped[0].size(), 4 * scene.balls.size());
+    EXPECT_NE(stepped[0], loaded) << "the run did not move";
+    EXPECT_EQ(stepped[0], stepped[1]);
+  }
 }
 
 TEST(NodeHost, StateComesBackAsLoadedAndAStepMovesIt) {
