@@ -29,7 +29,7 @@ CaseSelection selectCases(const std::function<const char*(const char*)>& environ
   std::uint64_t count = 2000;
   if (const char* sanitized = environment("FOOBALL_SANITIZED");
       sanitized != nullptr && std::string_view(sanitized) == "1") {
-    count = 1000;
+    count = 500;
   }
   if (const char* seed = environment("FOOBALL_CASE_SEED")) {
     const std::optional<std::uint64_t> value = wholeNumber(seed);
