@@ -100,9 +100,9 @@ TEST(NodeHost, NodeGetsItsOptionsAndOneItRefusesIsOneError) {
 }
 
 TEST(NodeHost, WebAssemblyStepsBitForBitTheSameInEitherOfV8sTiers) {
-  // scripts/test's sanitizer stages start the hosts with FOOBALL_NODE_OPTIONS=--liftoff-only:
+  // scripts/test starts the hosts with FOOBALL_NODE_OPTIONS=--liftoff-only (the test presets):
   // V8's baseline WebAssembly compiler alone. Its optimising tier (TurboFan) was a third of the
-  // CPU of the hosts those stages start, for runs too short to repay it. WebAssembly's arithmetic
+  // CPU of the hosts the tests start, for runs too short to repay it. WebAssembly's arithmetic
   // is defined bit for bit, so either tier must give the same run: each engine here runs once
   // with the baseline compiler only and once with the optimising one only.
   const Scene scene = standardGas(300, 0.2);
