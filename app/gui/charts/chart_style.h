@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QColor>
+#include <QMargins>
 #include <QPen>
 #include <QString>
 
@@ -35,6 +36,9 @@ void styleChart(QChart* chart, const QString& title, const QFont& baseFont);
 void styleAxis(QAbstractAxis* axis, const QFont& baseFont);
 /// The same, with ticks at round values from 0 (TicksDynamic, anchored at 0).
 void styleAxis(QValueAxis* axis, const QFont& baseFont);
+
+/// px around a live chart's plot (QChart::setMargins): room for the last label on the right.
+inline const QMargins kChartMargins(4, 2, 12, 2);
 
 /// Sets `axis` to `scale` with tick labels in `labelFormat` (printf style). In between, the new
 /// range never meets the old, finer interval, which could make 10⁵ tick items.

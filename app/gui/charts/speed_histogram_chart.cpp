@@ -14,8 +14,6 @@
 namespace fooball::gui {
 namespace {
 
-/// px around the plot: room for the last speed label on the right.
-const QMargins kChartMargins(4, 2, 12, 2);
 /// Tick intervals on the count axis: the dock is a strip, about 120 px of plot high.
 constexpr int kCountTicks = 4;
 /// The fill's opacity under an outline: one run's reads as a solid shape, eight overlaid still

@@ -19,8 +19,6 @@
 namespace fooball::gui {
 namespace {
 
-/// px around the plot: room for the last time label on the right.
-const QMargins kChartMargins(4, 2, 12, 2);
 /// px of plot height per value tick interval, and the most intervals: labels never crowd.
 constexpr double kPixelsPerValueTick = 32.0;
 constexpr int kMaxValueTicks = 6;

@@ -3,33 +3,20 @@
 #include <QGridLayout>
 #include <QLabel>
 
-#include "readable_number.h"
+#include "readouts/readout_cells.h"
 #include "run_palette.h"
 
 namespace fooball::gui {
 
 namespace {
 
-QString figure(double value) {
-  return QString::fromStdString(text::figureText(value));
-}
-
 QString signedFigure(double value) {
   return (value > 0.0 ? QStringLiteral("+") : QString()) + figure(value);
 }
 
-const QString kNoFigure = QStringLiteral("—");
-
 /// " at t = 4.90 s", to the status bar's digits; nothing before the first figures.
 QString momentText(const std::optional<double>& time) {
   return time ? CompareReadout::tr(" at t = %1 s").arg(*time, 0, 'f', 2) : QString();
-}
-
-QLabel* cell(const QString& text, const char* role, const QString& toolTip) {
-  auto* label = new QLabel(text);
-  label->setProperty("role", role);
-  label->setToolTip(toolTip);
-  return label;
 }
 
 }  // namespace
@@ -56,7 +43,7 @@ CompareReadout::CompareReadout(QWidget* parent)
          "difference is the method's"));
   grid_->addWidget(reference_, 0, 0);
   const auto addCaption = [this](int column, const QString& caption, const QString& toolTip) {
-    QLabel* label = cell(caption, "caption", toolTip);
+    QLabel* label = readoutCell(caption, "caption", toolTip);
     grid_->addWidget(label, 0, column, Qt::AlignRight);
   };
   addCaption(1, tr("RMS Δposition"),
@@ -85,12 +72,12 @@ CompareReadout::Row CompareReadout::addRow(int gridRow, const QString& label,
                                            const char* role) {
   Row row;
   row.label = label;
-  row.name = cell(nameHtml, role, toolTip);
+  row.name = readoutCell(nameHtml, role, toolTip);
   row.name->setTextFormat(Qt::RichText);
   grid_->addWidget(row.name, gridRow, 0);
   QLabel** figures[] = {&row.rms, &row.max, &row.energy, &row.momentum};
   for (int column = 0; column < 4; ++column) {
-    QLabel* value = cell(kNoFigure, role, toolTip);
+    QLabel* value = readoutCell(noFigure(), role, toolTip);
     value->setTextInteractionFlags(Qt::TextSelectableByMouse);
     grid_->addWidget(value, gridRow, column + 1, Qt::AlignRight);
     *figures[column] = value;
@@ -136,7 +123,7 @@ void CompareReadout::showReference() {
 void CompareReadout::showFigures(Row& row, const std::optional<fooball::Divergence>& divergence) {
   if (!divergence) {
     for (QLabel* label : {row.rms, row.max, row.energy, row.momentum})
-      label->setText(kNoFigure);
+      label->setText(noFigure());
     return;
   }
   row.rms->setText(figure(divergence->rmsPositionDifference) + tr(" m"));

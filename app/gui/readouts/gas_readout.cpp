@@ -5,7 +5,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "readable_number.h"
+#include "readouts/readout_cells.h"
 #include "run_palette.h"
 
 namespace fooball::gui {
@@ -18,22 +18,10 @@ constexpr int kFirstFigureRow = 1;
 /// times √N (Kolmogorov's asymptotic quantile).
 constexpr double kKolmogorov95 = 1.358;
 
-const QString kNoFigure = QStringLiteral("—");
 const QString kNotApplicable = QStringLiteral("n/a");
 
-QString figure(double value) {
-  return QString::fromStdString(text::figureText(value));
-}
-
 QString ratio(double measured, double theory) {
-  return theory > 0.0 ? QString::number(measured / theory, 'f', 3) : kNoFigure;
-}
-
-QLabel* cell(const QString& text, const char* role, const QString& toolTip = {}) {
-  auto* label = new QLabel(text);
-  label->setProperty("role", role);
-  label->setToolTip(toolTip);
-  return label;
+  return theory > 0.0 ? QString::number(measured / theory, 'f', 3) : noFigure();
 }
 
 /// The theory's rows differ for balls of one size and of several.
@@ -89,7 +77,7 @@ GasReadout::GasReadout(QWidget* parent)
   grid_->setVerticalSpacing(0);
 
   const auto caption = [this](Row row, const QString& text, const QString& toolTip) {
-    captions_[row] = cell(text, "caption", toolTip);
+    captions_[row] = readoutCell(text, "caption", toolTip);
     grid_->addWidget(captions_[row], kFirstFigureRow + row, 0);
   };
   caption(kTemperature, tr("kinetic temperature kT (J per ball)"),
@@ -128,7 +116,7 @@ void GasReadout::showRuns(const QStringList& labels) {
   for (int run = 0; run < labels.size(); ++run) {
     const QString html = QStringLiteral("<span style='color:%1'>●</span> %2")
                              .arg(colours::runColour(run).name(), labels[run].toHtmlEscaped());
-    QLabel* header = cell(html, "value", tr("Run %1: %2").arg(run).arg(labels[run]));
+    QLabel* header = readoutCell(html, "value", tr("Run %1: %2").arg(run).arg(labels[run]));
     header->setTextFormat(Qt::RichText);
     grid_->addWidget(header, kHeaderRow, run + 1, Qt::AlignRight);
     headers_.push_back(header);
@@ -136,7 +124,7 @@ void GasReadout::showRuns(const QStringList& labels) {
     for (int row = 0; row < kRowCount; ++row) {
       const bool theory = row == kHendersonPressure || row == kPressureRatio ||
                           row == kEnskogRate || row == kRateRatio;
-      column[row] = cell(kNoFigure, theory ? "theory" : "value", captions_[row]->toolTip());
+      column[row] = readoutCell(noFigure(), theory ? "theory" : "value", captions_[row]->toolTip());
       column[row]->setTextInteractionFlags(Qt::TextSelectableByMouse);
       grid_->addWidget(column[row], kFirstFigureRow + row, run + 1, Qt::AlignRight);
     }
@@ -186,16 +174,16 @@ void GasReadout::showStatistics(const GasMonitor::Snapshot& snapshot) {
     const bool theory = !snapshot.caveats.any();
     column[kTemperature]->setText(figure(gas.kineticTemperature));
     column[kDistance]->setText(QString::number(gas.maxwellBoltzmannDistance, 'f', 3));
-    column[kPressure]->setText(measured ? figure(gas.wallPressure) : kNoFigure);
-    column[kCollisionRate]->setText(measured ? figure(gas.collisionRate) : kNoFigure);
+    column[kPressure]->setText(measured ? figure(gas.wallPressure) : noFigure());
+    column[kCollisionRate]->setText(measured ? figure(gas.collisionRate) : noFigure());
     column[kHendersonPressure]->setText(theory ? figure(gas.theory.pressure) : kNotApplicable);
     column[kEnskogRate]->setText(theory ? figure(gas.theory.collisionRate) : kNotApplicable);
     column[kPressureRatio]->setText(
         !theory ? kNotApplicable
-                : (measured ? ratio(gas.wallPressure, gas.theory.pressure) : kNoFigure));
+                : (measured ? ratio(gas.wallPressure, gas.theory.pressure) : noFigure()));
     column[kRateRatio]->setText(
         !theory ? kNotApplicable
-                : (measured ? ratio(gas.collisionRate, gas.theory.collisionRate) : kNoFigure));
+                : (measured ? ratio(gas.collisionRate, gas.theory.collisionRate) : noFigure()));
   }
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "readouts/readout_cells.h"
 #include "run_palette.h"
 #include "widgets/number_format.h"
 
@@ -13,7 +14,6 @@ namespace fooball::gui {
 
 namespace {
 
-const QString kNoFigure = QStringLiteral("—");
 // The widest figure each column keeps room for, so the sidebar (fitted to its controls) keeps
 // its width as the counts grow, up to 100 million collisions (a minute of 100,000 balls), every
 // ball of the largest scene out, an overlap of a whole radius and more.
@@ -29,8 +29,8 @@ QLabel* rightAligned(const QString& text, const QString& toolTip) {
 }
 
 /// A figure's cell, as wide as `widest` at any count.
-QLabel* figure(const QString& widest) {
-  QLabel* label = rightAligned(kNoFigure, QString());
+QLabel* figureCell(const QString& widest) {
+  QLabel* label = rightAligned(noFigure(), QString());
   label->setMinimumWidth(label->fontMetrics().horizontalAdvance(widest));
   return label;
 }
@@ -92,10 +92,10 @@ void RunCounters::showRuns(const QStringList& labels) {
             nameHtml,
             0,
             new QLabel(nameHtml),
-            figure(formatCount(kWidestCollisions)),
-            figure(formatCount(kWidestCollisions)),
-            figure(kWidestOverlap),
-            figure(formatCount(kWidestEscaped))};
+            figureCell(formatCount(kWidestCollisions)),
+            figureCell(formatCount(kWidestCollisions)),
+            figureCell(kWidestOverlap),
+            figureCell(formatCount(kWidestEscaped))};
     row.name->setObjectName(QStringLiteral("runCounterName"));
     row.name->setWordWrap(true);
     row.name->setToolTip(tr("Run %1: %2").arg(run).arg(labels[run]));
@@ -113,7 +113,7 @@ void RunCounters::showMetrics(const std::vector<Metrics>& metrics) {
     Row& row = rows_[run];
     if (run >= metrics.size()) {
       for (QLabel* cell : {row.ballCollisions, row.wallCollisions, row.overlap, row.escaped})
-        cell->setText(kNoFigure);
+        cell->setText(noFigure());
       continue;
     }
     const Metrics& m = metrics[run];

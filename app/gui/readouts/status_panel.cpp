@@ -12,6 +12,7 @@
 #include "fooball/cut_short_notice.h"
 #include "fooball/limit_check.h"
 #include "fooball/metrics.h"
+#include "readouts/readout_cells.h"
 #include "registry.h"
 #include "run/frame_rate.h"
 #include "run/run_controller.h"
@@ -23,7 +24,6 @@ namespace {
 
 /// s a step may run in the background before the status bar says how to give it up.
 constexpr double kSlowStepNoticeSeconds = 1.0;
-constexpr int kRefreshMs = 250;
 constexpr int kNoticeMs = 8000;
 /// px: the widest the notices shown may grow together, so that with eight runs at 1000 px the
 /// fields and the timeline all fit; each tooltip has its notice whole.
@@ -86,7 +86,7 @@ StatusPanel::StatusPanel(QStatusBar& bar, const RunController& runs, const Frame
   limits_->setStyleSheet(cutShort_->styleSheet());
   limits_->hide();
   timer_ = new QTimer(this);
-  timer_->setInterval(kRefreshMs);
+  timer_->setInterval(kReadoutRefreshMs);
   connect(timer_, &QTimer::timeout, this, &StatusPanel::update);
 }
 

@@ -6,13 +6,13 @@
 #include <QSlider>
 #include <QTimer>
 
+#include "readouts/readout_cells.h"
 #include "run/run_controller.h"
 
 namespace fooball::gui {
 
 namespace {
 
-constexpr int kRefreshMs = 250;  // as the status bar's readouts
 constexpr double kBytesPerMegabyte = 1024.0 * 1024.0;
 
 }  // namespace
@@ -36,7 +36,7 @@ TimelineBar::TimelineBar(RunController& runs, QWidget* parent)
     if (!showing_) runs_.rewindTo(std::size_t(index));
   });
   auto* timer = new QTimer(this);
-  timer->setInterval(kRefreshMs);
+  timer->setInterval(kReadoutRefreshMs);
   connect(timer, &QTimer::timeout, this, &TimelineBar::showHistory);
   timer->start();
   showHistory();

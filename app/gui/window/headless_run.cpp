@@ -25,7 +25,7 @@ namespace {
 constexpr double kFrameSeconds = 1.0 / 60.0;  // physics per frame: one frame at 60 Hz
 /// The window size of --frames runs and screenshots without --size, whatever the user's saved
 /// layout.
-constexpr QSize kDefaultSize{1600, 1000};
+constexpr QSize kHeadlessSize{1600, 1000};
 
 /// Set by SIGINT or SIGTERM while recording: the video ends at the next frame, finished.
 volatile std::sig_atomic_t interrupted = 0;
@@ -108,7 +108,7 @@ int runHeadless(MainWindow& window, int frames, const std::optional<QString>& sc
                 const std::optional<QSize>& size) {
   // Every frame shows its steps: this is a measurement, not a window to keep responsive.
   window.runs().setStepPatience(RunController::kWaitForEveryStep);
-  window.resize(size.value_or(kDefaultSize));
+  window.resize(size.value_or(kHeadlessSize));
   window.show();
   QApplication::processEvents();
 

@@ -38,7 +38,7 @@ namespace fooball::gui {
 
 namespace {
 
-constexpr QSize kDefaultSize{1440, 900};  // px, before it is fitted to the screen
+constexpr QSize kDefaultWindowSize{1440, 900};  // px, before it is fitted to the screen
 
 }  // namespace
 
@@ -84,7 +84,7 @@ MainWindow::MainWindow(const StartupOptions& options, QWidget* parent)
   new MouseTools({*view_, *runs_, *feed_, *sidebar_, *status_, *messages_}, this);
   connectParts();
 
-  resize(kDefaultSize);
+  resize(kDefaultWindowSize);
   if (rememberSettings_) docksSized_ = readWindowSettings(remembered());
   if (options.balls) runs_->setBallCount(*options.balls);
   // Compare mode shows the chaos baseline unless the user hides it.
@@ -201,7 +201,7 @@ void MainWindow::resetLayout() {
   // which the reopened dock could not be raised.
   removeDockWidget(statisticsDock_);
   restoreState(defaultLayout_);
-  resize(kDefaultSize);
+  resize(kDefaultWindowSize);
   keepFullyOnScreen(*this);
   giveDocksFirstShare(*this, *chartsDock_, *sidebarDock_);
 }

@@ -16,26 +16,27 @@ namespace fooball::failure_map {
 
 namespace {
 
-constexpr double kRadius = 0.25;  // m
-constexpr double kSpeed = 1.0;    // m/s, of the shooter
+constexpr double kPairRadius = 0.25;   // m
+constexpr double kShooterSpeed = 1.0;  // m/s, of the shooter
 
-/// Ball 0 (mass `shooterMass`, kg) at kSpeed towards ball 1 (`targetMass`) at rest; the largest
-/// error of the two outgoing velocities over kSpeed, as the point at `ratio` of `variant`.
+/// Ball 0 (mass `shooterMass`, kg) at kShooterSpeed towards ball 1 (`targetMass`) at rest; the
+/// largest error of the two outgoing velocities over kShooterSpeed, as the point at `ratio` of
+/// `variant`.
 SweepPoint headOn(std::string_view backend, std::string variant, double ratio, double shooterMass,
                   double targetMass) {
   Scene scene;
   scene.name = "mass ratio";
   scene.box = {8.0, 2.0};
-  scene.balls = {{{2.0, 1.0}, {kSpeed, 0.0}, kRadius, shooterMass},
-                 {{2.0 + 2.0 * kRadius + 0.3, 1.0}, {}, kRadius, targetMass}};
+  scene.balls = {{{2.0, 1.0}, {kShooterSpeed, 0.0}, kPairRadius, shooterMass},
+                 {{2.0 + 2.0 * kPairRadius + 0.3, 1.0}, {}, kPairRadius, targetMass}};
   // 0.3 m to the hit, then ≤ 2 m/s for the rest of 1 s: both stay clear of the walls.
   const RunRecord run = runScene(scene, backend, 1.0);
   const double total = shooterMass + targetMass;
-  const Vec2 shooterExact{(shooterMass - targetMass) / total * kSpeed, 0.0};
-  const Vec2 targetExact{2.0 * shooterMass / total * kSpeed, 0.0};
+  const Vec2 shooterExact{(shooterMass - targetMass) / total * kShooterSpeed, 0.0};
+  const Vec2 targetExact{2.0 * shooterMass / total * kShooterSpeed, 0.0};
   const double error =
       std::max(length(run.velocities[0] - shooterExact), length(run.velocities[1] - targetExact)) /
-      kSpeed;
+      kShooterSpeed;
   return measuredPoint(scene, std::move(variant), ratio, error);
 }
 

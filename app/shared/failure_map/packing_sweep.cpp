@@ -14,7 +14,7 @@ namespace fooball::failure_map {
 
 namespace {
 
-constexpr double kSpeed = 1.0;  // m/s
+constexpr double kPackingSpeed = 1.0;  // m/s
 
 /// `side` × `side` balls on a triangular lattice of packing fraction `fraction` (< π/√12); the
 /// margin to the walls makes the box's own fraction a little lower.
@@ -33,7 +33,8 @@ Scene latticeGas(double radius, double fraction, int side) {
       const double x = (column + (row % 2 == 0 ? 0.5 : 1.0)) * pitch;
       const double y = row * rowHeight + 0.5 * pitch;
       const auto index = static_cast<std::size_t>(row * side + column);
-      scene.balls.push_back({{x, y}, kSpeed * spreadDirection(index), radius, diskMass(radius)});
+      scene.balls.push_back(
+          {{x, y}, kPackingSpeed * spreadDirection(index), radius, diskMass(radius)});
     }
   }
   return scene;

@@ -16,21 +16,22 @@ namespace fooball::failure_map {
 
 namespace {
 
-constexpr double kRadius = 0.1;  // m
+constexpr double kPileRadius = 0.1;  // m
 constexpr int kRows = 4;
 constexpr int kBottomRow = 6;  ///< balls; rows alternate 6 and 5
 
 Scene pile(double gravity) {
   Scene scene;
   scene.name = "pile";
-  scene.box = {2.0 * kRadius * kBottomRow, 20.0 * kRadius};
+  scene.box = {2.0 * kPileRadius * kBottomRow, 20.0 * kPileRadius};
   scene.world.gravity = {0.0, -gravity};
   for (int row = 0; row < kRows; ++row) {
     const bool shifted = row % 2 == 1;
-    const double y = kRadius + row * std::sqrt(3.0) * kRadius;  // rows touch their neighbours
+    const double y =
+        kPileRadius + row * std::sqrt(3.0) * kPileRadius;  // rows touch their neighbours
     for (int column = 0; column < kBottomRow - (shifted ? 1 : 0); ++column) {
-      const double x = (shifted ? 2.0 : 1.0) * kRadius + 2.0 * kRadius * column;
-      scene.balls.push_back({{x, y}, {}, kRadius, diskMass(kRadius)});
+      const double x = (shifted ? 2.0 : 1.0) * kPileRadius + 2.0 * kPileRadius * column;
+      scene.balls.push_back({{x, y}, {}, kPileRadius, diskMass(kPileRadius)});
     }
   }
   return scene;

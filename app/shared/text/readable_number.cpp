@@ -25,7 +25,7 @@ std::string readableText(double value, int significantDigits) {
 std::string figureText(double value) {
   constexpr int kSignificantDigits = 4;
   constexpr int kExponentFormDigits = 3;
-  if (!std::isfinite(value)) return "—";
+  if (!std::isfinite(value)) return std::string(kNoFigure);
   const double magnitude = std::abs(value);
   if (magnitude != 0.0 && (magnitude < 1e-3 || magnitude >= 1e5)) {
     return printed("%.*e", kExponentFormDigits - 1, value);

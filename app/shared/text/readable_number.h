@@ -1,11 +1,15 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 /// Numbers as text for people: fooball-cli's tables and summaries and the app's readouts. (The
 /// exact text that reads back to the same double, for files and specs, is exactNumberText in
 /// fooball/number_text.h.)
 namespace fooball::text {
+
+/// What a readout shows where it has no figure (yet): an em dash.
+inline constexpr std::string_view kNoFigure = "—";
 
 /// `value` with `significantDigits` significant digits (%g), e.g. "0.0166667".
 std::string readableText(double value, int significantDigits = 6);
