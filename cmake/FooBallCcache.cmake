@@ -8,4 +8,7 @@ cmake_path(GET CMAKE_CURRENT_LIST_DIR PARENT_PATH FOOBALL_REPOSITORY_DIR)
 if(FOOBALL_CCACHE AND FOOBALL_CCACHE_PROGRAM AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
   set(CMAKE_CXX_COMPILER_LAUNCHER env CCACHE_BASEDIR=${FOOBALL_REPOSITORY_DIR} CCACHE_NOHASHDIR=1
                                   ${FOOBALL_CCACHE_PROGRAM})
+  # __FILE__ (GoogleTest's and Qt's messages) relative to the clone too: a unity batch includes
+  # its files by absolute path, which would otherwise land in its preprocessed text and object.
+  add_compile_options(-fmacro-prefix-map=${FOOBALL_REPOSITORY_DIR}/=)
 endif()
