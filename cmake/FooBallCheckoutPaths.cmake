@@ -24,5 +24,7 @@ function(fooball_checkout_paths target header)
   file(GENERATE OUTPUT ${directory}/checkout_paths.cpp
        CONTENT "#include \"${header}\"\nnamespace fooball::checkout {\n${definitions}}  // namespace fooball::checkout\n")
   target_sources(${target} PRIVATE ${directory}/checkout_paths.cpp)
+  # Out of unity batches too, which would take the folder into a whole batch's text.
+  set_source_files_properties(${directory}/checkout_paths.cpp PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
   target_include_directories(${target} PRIVATE ${directory})
 endfunction()
